@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_extraction.h
+/// @brief The zero level set of a P1 nodal field: marching triangles (2D, closed polylines)
+/// and marching tetrahedra (3D, a triangle surface).
+///
+/// Output vertices are keyed by the mesh edge they lie on, so the result is welded and, on a
+/// conforming mesh, closed and manifold by construction. A nodal value of exactly 0 counts as
+/// positive, so the level set never passes through a mesh vertex. Facets are oriented with
+/// their normals towards u > 0 (outwards when u < 0 inside).
+#pragma once
+
+#include "lsrecon/core/simplex_geometry.h"
+
+#include <array>
+#include <vector>
+
+namespace lsr {
+
+/// @brief The extracted zero set: segments (D = 2) or triangles (D = 3).
+template <int D>
+struct LevelSetMesh {
+  Points<D> vertices;                       ///< #V points on mesh edges
+  std::vector<std::array<Index, D>> facets;  ///< #F oriented segments / triangles
+  /// #V: the mesh edge (a < b) each vertex lies on and its parameter t in (0, 1), so that
+  /// vertex = (1 - t) x_a + t x_b. Handy for normals, attributes and tests.
+  std::vector<EdgePoint> sources;
+};
+
+/// @brief Extracts {u = 0}. u holds one value per mesh vertex.
+/// @throw InvalidInput if u has the wrong size or a non-finite value.
+template <int D>
+LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u);
+
+/// @brief Orders the segments of a 2D zero set into closed loops, each a list of vertex
+/// indices in order (the last joins the first). The negative side is on the left: outer
+/// boundaries of u < 0 run counter-clockwise.
+/// @throw InvalidInput if a vertex does not have exactly one incoming and one outgoing segment.
+std::vector<std::vector<Index>> closed_loops(const LevelSetMesh<2>& curves);
+
+}  // namespace lsr

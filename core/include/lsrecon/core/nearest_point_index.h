@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file nearest_point_index.h
+/// @brief Exact nearest-neighbour queries to a point set (a FLANN kd-tree): the unsigned
+/// distance d(x) to the data of eq. (1).
+#pragma once
+
+#include "lsrecon/core/types.h"
+
+#include <memory>
+#include <vector>
+
+namespace lsr {
+
+/// @brief A kd-tree over a fixed point set. Queries are exact (no approximate search), batched
+/// and run on several threads; results do not depend on the thread count.
+template <int D>
+class NearestPointIndex {
+ public:
+  /// @throw InvalidInput if points is empty or holds a non-finite coordinate.
+  explicit NearestPointIndex(Points<D> points);
+  ~NearestPointIndex();
+  NearestPointIndex(NearestPointIndex&&) noexcept;
+  NearestPointIndex& operator=(NearestPointIndex&&) noexcept;
+
+  const Points<D>& points() const;
+
+  /// @brief For each query, the distance to its nearest data point and, if nearest is given,
+  /// that point's index (the lowest-index one among exact ties is not guaranteed).
+  /// @param threads number of threads, 0 for all cores.
+  void query(const Points<D>& queries, std::vector<double>& distance,
+             std::vector<Index>* nearest = nullptr, int threads = 0) const;
+
+  /// @brief Distance from one point to the data.
+  double distance(const Vec<D>& q) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lsr

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file simplex_geometry.h
+/// @brief A simplicial mesh (triangles in 2D, tetrahedra in 3D) and the per-simplex geometry
+/// the P1 operators need: measures, barycentric-coordinate gradients and vertex balls.
+#pragma once
+
+#include "lsrecon/core/types.h"
+
+#include <array>
+#include <vector>
+
+namespace lsr {
+
+/// @brief Vertices and simplices. Simplices list D + 1 vertex indices, positively oriented
+/// (det[x1 - x0, ..., xD - x0] > 0) when produced by lsrecon.
+template <int D>
+struct SimplexMesh {
+  Points<D> vertices;                            ///< #V points of R^D
+  std::vector<std::array<Index, D + 1>> simplices;  ///< #S simplices
+};
+
+/// @brief det[x1 - x0, ..., xD - x0] / D!: the measure of simplex s, negative when it is
+/// negatively oriented.
+template <int D>
+double signed_measure(const SimplexMesh<D>& mesh, Index s);
+
+/// @brief Geometry of a fixed mesh, computed once: what eq. (10)-(14) of the paper sum over.
+template <int D>
+struct SimplexGeometry {
+  std::vector<double> measure;  ///< #S: |K|
+  /// #S: gradient of the barycentric coordinate of the j-th vertex of K (constant on K).
+  std::vector<std::array<Vec<D>, D + 1>> gradients;
+  /// CSR adjacency of the balls B_i: the simplices containing vertex i are
+  /// ball_simplices[ball_offsets[i] .. ball_offsets[i + 1]).
+  std::vector<Index> ball_offsets;
+  std::vector<Index> ball_simplices;
+  std::vector<double> ball_measure;  ///< #V: |B_i| = sum of |K| over B_i
+};
+
+/// @brief Computes measures, gradients and balls.
+/// @throw InvalidInput if a simplex is degenerate (zero measure).
+template <int D>
+SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh);
+
+}  // namespace lsr

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file types.h
+/// @brief Small value types shared by every part of the core.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace lsr {
+
+/// Index of a vertex or simplex. 32 bits: meshes are capped far below 2^31 entries.
+using Index = std::int32_t;
+
+/// A point or vector of R^D. DontAlign makes it safe inside std::vector whatever the C++
+/// standard or Eigen's over-alignment setting (see DESIGN.md section 8).
+template <int D>
+using Vec = Eigen::Matrix<double, D, 1, Eigen::DontAlign>;
+
+/// A list of points of R^D.
+template <int D>
+using Points = std::vector<Vec<D>>;
+
+/// A mesh edge (a, b) with a < b and the parameter t of a point (1 - t) x_a + t x_b on it.
+struct EdgePoint {
+  Index a = -1;
+  Index b = -1;
+  double t = 0.0;
+};
+
+}  // namespace lsr

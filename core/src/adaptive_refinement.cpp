@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file adaptive_refinement.cpp
+/// @brief Pass-by-pass graded refinement: each pass tests the simplices created by the last
+/// one and bisects those larger than the sizing function allows.
+#include "lsrecon/core/adaptive_refinement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_set>
+
+namespace lsr {
+namespace {
+
+// A finite check that reads like the bound it enforces.
+bool in_range(double x, double lo, double hi) { return std::isfinite(x) && x > lo && x < hi; }
+
+// Lower bound on the vertices needed: every grid cell of side h_min holding a data point is
+// covered by simplices of size <= h_min, at least one vertex per such cell on average.
+template <int D>
+double occupied_cells(const Points<D>& points, double h) {
+  std::unordered_set<std::uint64_t> cells;
+  const double n = std::ceil(1.0 / h);
+  for (const auto& p : points) {
+    std::uint64_t key = 0;
+    for (int d = 0; d < D; ++d) {
+      const double c = std::clamp(std::floor(p[d] / h), 0.0, n);
+      key = key * std::uint64_t(n + 1) + std::uint64_t(c);  // fits: n^3 < 2^64 for n < 2^21
+    }
+    cells.insert(key);
+  }
+  return double(cells.size());
+}
+
+// Once the fine band follows the data, each pass (one bisection level, sizes / 2^(1/D)) adds
+// surface_growth = 2^((D-1)/D) times the vertices the previous one added. Predicts the final
+// count from the last pass and refuses before allocating; the suggested resolution is the
+// finest the same model fits within the limit, less 10%.
+template <int D>
+void check_predicted_size(double vertices, double added, double finest_now,
+                          const AdaptiveMeshOptions& o) {
+  const double surface_growth = std::pow(2.0, double(D - 1) / D);
+  const double levels_left = std::max(0.0, std::ceil(D * std::log2(finest_now / o.h_min) - 1e-9));
+  double predicted = vertices;
+  double fitting_levels = 0.0;
+  double g = surface_growth;
+  for (double k = 1; k <= levels_left; ++k, g *= surface_growth) {
+    predicted += added * g;
+    if (predicted <= double(o.max_vertices)) fitting_levels = k;
+  }
+  if (predicted <= double(o.max_vertices)) return;
+  const double feasible = std::floor(0.9 * std::pow(2.0, fitting_levels / D) / finest_now);
+  throw MeshTooLarge("a mesh at resolution " + std::to_string(int(1.0 / o.h_min)) +
+                         " is predicted to need about " + std::to_string(std::int64_t(predicted)) +
+                         " vertices (limit " + std::to_string(o.max_vertices) + ")",
+                     feasible);
+}
+
+template <int D>
+struct Candidates {
+  std::vector<Index> nodes;
+  Points<D> centroids;
+  std::vector<double> radii;
+};
+
+template <int D>
+Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first) {
+  Candidates<D> c;
+  const auto& simplices = forest.simplices();
+  for (Index s = first; s < Index(simplices.size()); ++s) {
+    if (!forest.is_leaf(s)) continue;
+    Vec<D> centroid = Vec<D>::Zero();
+    for (Index v : simplices[s].v) centroid += forest.vertices()[v];
+    centroid /= double(D + 1);
+    double r = 0.0;
+    for (Index v : simplices[s].v) r = std::max(r, (forest.vertices()[v] - centroid).norm());
+    c.nodes.push_back(s);
+    c.centroids.push_back(centroid);
+    c.radii.push_back(r);
+  }
+  return c;
+}
+
+}  // namespace
+
+void validate(const AdaptiveMeshOptions& o) {
+  if (!in_range(o.h_min, 0.0, 1.0)) {
+    throw InvalidInput("h_min = " + std::to_string(o.h_min) + " is outside (0, 1)",
+                       "h_min is relative to the unit box: try 1/128 (resolution 128)");
+  }
+  if (!(std::isfinite(o.h_max) && o.h_max >= o.h_min && o.h_max <= 1.0)) {
+    throw InvalidInput("h_max = " + std::to_string(o.h_max) + " is outside [h_min, 1]",
+                       "use h_max between h_min and 1, e.g. 1/8");
+  }
+  if (!(std::isfinite(o.grading) && o.grading > 0.0 && o.grading <= 100.0)) {
+    throw InvalidInput("grading = " + std::to_string(o.grading) + " is outside (0, 100]",
+                       "use a grading around 1 (smaller widens the fine band)");
+  }
+  if (o.max_vertices <= 0) {
+    throw InvalidInput("max_vertices must be positive", "leave it at its default (20 million)");
+  }
+}
+
+template <int D>
+AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
+                                    const AdaptiveMeshOptions& o, const Progress& progress) {
+  validate(o);
+  const double resolution = 1.0 / o.h_min;
+  const double limit = double(o.max_vertices);
+  const double lower_bound = occupied_cells<D>(data.points(), o.h_min);
+  if (lower_bound > limit) {
+    throw MeshTooLarge("a mesh at resolution " + std::to_string(int(resolution)) + " needs over " +
+                           std::to_string(std::int64_t(lower_bound)) + " vertices (limit " +
+                           std::to_string(o.max_vertices) + ")",
+                       // occupied cells scale like resolution^(D-1) on a surface
+                       std::floor(0.8 * resolution * std::pow(limit / lower_bound, 1.0 / (D - 1))));
+  }
+
+  // The background grid already meets h_max: cells are at most h_max wide.
+  const int cells = 1 << int(std::ceil(std::log2(1.0 / o.h_max) - 1e-9));
+  if (std::pow(cells + 1.0, D) > limit) {
+    throw MeshTooLarge("the background grid for h_max = " + std::to_string(o.h_max) +
+                           " alone needs more than " + std::to_string(o.max_vertices) + " vertices",
+                       resolution);
+  }
+  KuhnBisectionForest<D> forest(cells);
+  int passes = 0;
+  Candidates<D> cand = leaves_from(forest, 0);
+  std::vector<double> dist;
+  while (!cand.nodes.empty()) {
+    progress.update("mesh", -1.0);
+    data.query(cand.centroids, dist, nullptr, o.threads);
+    const Index first_new = Index(forest.simplices().size());
+    const Index vertices_before = Index(forest.vertices().size());
+    double largest_marked = 0.0;
+    std::vector<Index> marked;
+    for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
+      const double size = forest.size(cand.nodes[i]);
+      const double dist_lower = std::max(0.0, dist[i] - cand.radii[i]);
+      if (size > o.h_max || (size > o.h_min && size > o.grading * dist_lower)) {
+        marked.push_back(cand.nodes[i]);
+        largest_marked = std::max(largest_marked, size);
+      }
+    }
+    if (marked.empty()) break;
+    for (Index s : marked) {
+      if (forest.is_leaf(s)) forest.refine(s);
+    }
+    ++passes;
+
+    check_predicted_size<D>(double(forest.vertices().size()),
+                            double(forest.vertices().size()) - vertices_before,
+                            largest_marked / std::pow(2.0, 1.0 / D), o);
+    cand = leaves_from(forest, first_new);
+  }
+  AdaptiveMesh<D> out = leaf_mesh(std::move(forest));
+  out.stats.passes = passes;
+  return out;
+}
+
+template <int D>
+AdaptiveMesh<D> leaf_mesh(KuhnBisectionForest<D> refined) {
+  AdaptiveMesh<D> out;
+  out.forest = std::move(refined);
+  auto& forest = out.forest;
+  forest.finish_refinement();
+  out.mesh.vertices = forest.vertices();
+  const auto& nodes = forest.simplices();
+  out.simplex_of_node.assign(nodes.size(), -1);
+  out.mesh.simplices.reserve(forest.leaf_count());
+  double finest = 1.0;
+  for (Index s = 0; s < Index(nodes.size()); ++s) {
+    if (!forest.is_leaf(s)) continue;
+    out.simplex_of_node[s] = Index(out.mesh.simplices.size());
+    out.mesh.simplices.push_back(nodes[s].v);
+    if (signed_measure(out.mesh, out.simplex_of_node[s]) < 0.0) {
+      std::swap(out.mesh.simplices.back()[D - 1], out.mesh.simplices.back()[D]);
+    }
+    finest = std::min(finest, forest.size(s));
+  }
+  out.stats.finest_size = finest;
+  out.stats.uniform_vertices = Index(std::pow(std::round(1.0 / finest) + 1.0, D));
+  return out;
+}
+
+
+template AdaptiveMesh<2> leaf_mesh<2>(KuhnBisectionForest<2>);
+template AdaptiveMesh<3> leaf_mesh<3>(KuhnBisectionForest<3>);
+template AdaptiveMesh<2> build_adaptive_mesh<2>(const NearestPointIndex<2>&,
+                                                const AdaptiveMeshOptions&, const Progress&);
+template AdaptiveMesh<3> build_adaptive_mesh<3>(const NearestPointIndex<3>&,
+                                                const AdaptiveMeshOptions&, const Progress&);
+
+}  // namespace lsr

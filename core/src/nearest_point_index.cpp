@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file nearest_point_index.cpp
+/// @brief FLANN single kd-tree with unlimited checks: exact nearest neighbours.
+#include "lsrecon/core/nearest_point_index.h"
+
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/point_validation.h"
+
+#include <flann/flann.hpp>
+
+#include <cmath>
+#include <thread>
+
+namespace lsr {
+
+template <int D>
+struct NearestPointIndex<D>::Impl {
+  Points<D> points;
+  std::vector<double> flat;  // FLANN reads row-major coordinates and does not copy them
+  std::unique_ptr<flann::Index<flann::L2<double>>> index;
+};
+
+template <int D>
+NearestPointIndex<D>::NearestPointIndex(Points<D> points) : impl_(std::make_unique<Impl>()) {
+  require_valid_points(points, "data points");
+  impl_->points = std::move(points);
+  const auto& p = impl_->points;
+  impl_->flat.resize(p.size() * D);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int d = 0; d < D; ++d) impl_->flat[i * D + d] = p[i][d];
+  }
+  flann::Matrix<double> data(impl_->flat.data(), p.size(), D);
+  impl_->index = std::make_unique<flann::Index<flann::L2<double>>>(
+      data, flann::KDTreeSingleIndexParams(/*leaf_max_size=*/12));
+  impl_->index->buildIndex();
+}
+
+template <int D>
+NearestPointIndex<D>::~NearestPointIndex() = default;
+template <int D>
+NearestPointIndex<D>::NearestPointIndex(NearestPointIndex&&) noexcept = default;
+template <int D>
+NearestPointIndex<D>& NearestPointIndex<D>::operator=(NearestPointIndex&&) noexcept = default;
+
+template <int D>
+const Points<D>& NearestPointIndex<D>::points() const {
+  return impl_->points;
+}
+
+template <int D>
+void NearestPointIndex<D>::query(const Points<D>& queries, std::vector<double>& distance,
+                                 std::vector<Index>* nearest, int threads) const {
+  const std::size_t n = queries.size();
+  distance.assign(n, 0.0);
+  if (nearest) nearest->assign(n, -1);
+  if (n == 0) return;
+  std::vector<double> flat(n * D);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) flat[i * D + d] = queries[i][d];
+  }
+  std::vector<std::size_t> idx(n);
+  flann::Matrix<double> q(flat.data(), n, D);
+  flann::Matrix<std::size_t> indices(idx.data(), n, 1);
+  flann::Matrix<double> dist2(distance.data(), n, 1);
+  flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, /*eps=*/0.0f, /*sorted=*/false);
+  params.cores = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  impl_->index->knnSearch(q, indices, dist2, 1, params);
+  for (std::size_t i = 0; i < n; ++i) {
+    distance[i] = std::sqrt(distance[i]);
+    if (nearest) (*nearest)[i] = Index(idx[i]);
+  }
+}
+
+template <int D>
+double NearestPointIndex<D>::distance(const Vec<D>& q) const {
+  std::vector<double> d;
+  query(Points<D>{q}, d, nullptr, 1);
+  return d[0];
+}
+
+template class NearestPointIndex<2>;
+template class NearestPointIndex<3>;
+
+}  // namespace lsr

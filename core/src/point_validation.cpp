@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file point_validation.cpp
+#include "lsrecon/core/point_validation.h"
+
+#include "lsrecon/core/errors.h"
+
+namespace lsr {
+
+template <int D>
+std::size_t count_non_finite(const Points<D>& points) {
+  std::size_t bad = 0;
+  for (const auto& p : points) bad += p.allFinite() ? 0 : 1;
+  return bad;
+}
+
+template <int D>
+Points<D> drop_non_finite(const Points<D>& points) {
+  Points<D> kept;
+  kept.reserve(points.size());
+  for (const auto& p : points) {
+    if (p.allFinite()) kept.push_back(p);
+  }
+  return kept;
+}
+
+template <int D>
+void require_valid_points(const Points<D>& points, const std::string& what) {
+  if (points.empty()) {
+    throw InvalidInput(what + ": the point set is empty", "pass at least one point");
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) {
+      throw InvalidInput(what + ": point " + std::to_string(i) + " has a NaN or infinite coordinate",
+                         "remove non-finite points first (lsr::drop_non_finite)");
+    }
+  }
+}
+
+#define LSR_INSTANTIATE(D)                                              \
+  template std::size_t count_non_finite<D>(const Points<D>&);          \
+  template Points<D> drop_non_finite<D>(const Points<D>&);             \
+  template void require_valid_points<D>(const Points<D>&, const std::string&);
+LSR_INSTANTIATE(2)
+LSR_INSTANTIATE(3)
+#undef LSR_INSTANTIATE
+
+}  // namespace lsr

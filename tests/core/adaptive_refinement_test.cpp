@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file adaptive_refinement_test.cpp
+/// @brief Grading of the adaptive mesh: fine on the data, vertex count that follows the
+/// surface, refusal of meshes that would not fit.
+#include "core/mesh_checks.h"
+#include "lsrecon/core/adaptive_refinement.h"
+#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/point_location.h"
+
+#include <gtest/gtest.h>
+
+namespace lsr {
+namespace {
+
+const Sphere kSphere{Vec<3>(0.5, 0.5, 0.5), 0.3};
+
+// Sampling spacing below h_min at 1/256 (sqrt(4 pi r^2 / n) = 0.0027 < 0.0039), so the fine
+// band follows the surface and not isolated points.
+const NearestPointIndex<3>& sphere_data() {
+  static const NearestPointIndex<3> index(kSphere.sample(150000));
+  return index;
+}
+
+AdaptiveMesh<3> sphere_mesh(double h_min) {
+  AdaptiveMeshOptions o;
+  o.h_min = h_min;
+  return build_adaptive_mesh(sphere_data(), o);
+}
+
+TEST(AdaptiveRefinement, GradedSphereMeshIsSmallConformingAndFineOnTheData) {
+  const double h_min = 1.0 / 256;
+  const AdaptiveMesh<3> m = sphere_mesh(h_min);
+  const double uniform = std::pow(256.0 + 1.0, 3);
+  EXPECT_LE(double(m.mesh.vertices.size()), 0.03 * uniform);
+  EXPECT_LE(m.stats.finest_size, h_min);
+  EXPECT_EQ(testing::conformity_error(m.mesh), "");
+
+  // Every simplex that holds a data point has size <= h_min.
+  const auto& nodes = m.forest.simplices();
+  std::vector<Index> node_of_simplex(m.mesh.simplices.size());
+  for (Index n = 0; n < Index(nodes.size()); ++n) {
+    if (m.simplex_of_node[n] >= 0) node_of_simplex[m.simplex_of_node[n]] = n;
+  }
+  double largest_on_data = 0.0;
+  for (const auto& at : locate_all(m, sphere_data().points())) {
+    ASSERT_TRUE(at.found());
+    largest_on_data = std::max(largest_on_data, m.forest.size(node_of_simplex[at.simplex]));
+  }
+  EXPECT_LE(largest_on_data, h_min * (1 + 1e-12));
+}
+
+TEST(AdaptiveRefinement, DoublingTheResolutionQuadruplesTheVertexCountIn3D) {
+  // Vertices ~ area / h^2 for a band whose width scales with h: a factor 4, not 8. The coarse
+  // part does not grow, which can only lower the ratio.
+  const double n128 = double(sphere_mesh(1.0 / 128).mesh.vertices.size());
+  const double n256 = double(sphere_mesh(1.0 / 256).mesh.vertices.size());
+  EXPECT_LE(n256 / n128, 4.5);
+  EXPECT_GE(n256 / n128, 3.0);
+}
+
+TEST(AdaptiveRefinement, DoublingTheResolutionDoublesTheVertexCountIn2D) {
+  const NearestPointIndex<2> data(Circle{Vec<2>(0.5, 0.5), 0.3}.sample(20000));
+  AdaptiveMeshOptions o;
+  o.h_min = 1.0 / 1024;
+  const double n1 = double(build_adaptive_mesh(data, o).mesh.vertices.size());
+  o.h_min = 1.0 / 2048;
+  const AdaptiveMesh<2> fine = build_adaptive_mesh(data, o);
+  const double n2 = double(fine.mesh.vertices.size());
+  EXPECT_LE(n2 / n1, 2.25);
+  EXPECT_GE(n2 / n1, 1.5);
+  EXPECT_EQ(testing::conformity_error(fine.mesh), "");
+}
+
+TEST(AdaptiveRefinement, RejectsBadOptions) {
+  const NearestPointIndex<3> data(kSphere.sample(100));
+  for (double h : {0.0, -1.0, 1.0, 2.0, std::nan("")}) {
+    AdaptiveMeshOptions o;
+    o.h_min = h;
+    EXPECT_THROW(build_adaptive_mesh(data, o), InvalidInput) << h;
+  }
+  AdaptiveMeshOptions o;
+  o.h_max = o.h_min / 2;
+  EXPECT_THROW(build_adaptive_mesh(data, o), InvalidInput);
+  o = AdaptiveMeshOptions();
+  o.grading = 0.0;
+  EXPECT_THROW(build_adaptive_mesh(data, o), InvalidInput);
+}
+
+TEST(AdaptiveRefinement, RefusesAMeshThatWouldNotFitAndNamesAFeasibleResolution) {
+  AdaptiveMeshOptions o;
+  o.h_min = 1.0 / 1024;
+  o.max_vertices = 300000;
+  double suggested = 0.0;
+  try {
+    build_adaptive_mesh(sphere_data(), o);
+    FAIL() << "expected MeshTooLarge";
+  } catch (const MeshTooLarge& e) {
+    suggested = e.largest_feasible_resolution;
+    EXPECT_NE(std::string(e.what()).find("resolution of at most"), std::string::npos) << e.what();
+  }
+  ASSERT_GE(suggested, 8.0);
+  o.h_min = 1.0 / suggested;
+  const AdaptiveMesh<3> m = build_adaptive_mesh(sphere_data(), o);
+  EXPECT_LE(Index(m.mesh.vertices.size()), o.max_vertices);
+}
+
+TEST(AdaptiveRefinement, RefusesAbsurdResolutionsQuickly) {
+  AdaptiveMeshOptions o;
+  o.h_min = 1e-7;  // 10^14 cells on the sphere: refused from the first passes, nothing allocated
+  EXPECT_THROW(build_adaptive_mesh(sphere_data(), o), MeshTooLarge);
+  o = AdaptiveMeshOptions();
+  o.h_max = o.h_min = 1e-3;  // a uniform background grid of 10^9 vertices
+  EXPECT_THROW(build_adaptive_mesh(sphere_data(), o), MeshTooLarge);
+}
+
+TEST(AdaptiveRefinement, ProgressCanCancel) {
+  AdaptiveMeshOptions o;
+  o.h_min = 1.0 / 256;
+  int calls = 0;
+  Progress stop_third([&](const std::string&, double) { return ++calls < 3; });
+  EXPECT_THROW(build_adaptive_mesh(sphere_data(), o, stop_third), Cancelled);
+  EXPECT_EQ(calls, 3);
+}
+
+TEST(AdaptiveRefinement, IsDeterministic) {
+  const AdaptiveMesh<3> a = sphere_mesh(1.0 / 64);
+  const AdaptiveMesh<3> b = sphere_mesh(1.0 / 64);
+  ASSERT_EQ(a.mesh.simplices.size(), b.mesh.simplices.size());
+  EXPECT_TRUE(a.mesh.simplices == b.mesh.simplices);
+}
+
+}  // namespace
+}  // namespace lsr

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file nearest_point_index_test.cpp
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/nearest_point_index.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
+namespace lsr {
+namespace {
+
+template <int D>
+Points<D> random_points(int n, unsigned seed, double lo, double hi) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  Points<D> p(n);
+  for (auto& x : p) {
+    for (int d = 0; d < D; ++d) x[d] = u(rng);
+  }
+  return p;
+}
+
+template <int D>
+void check_against_brute_force(int threads) {
+  const Points<D> data = random_points<D>(3000, 1, 0.0, 1.0);
+  const Points<D> queries = random_points<D>(500, 2, -0.2, 1.2);
+  NearestPointIndex<D> index(data);
+  std::vector<double> dist;
+  std::vector<Index> nearest;
+  index.query(queries, dist, &nearest, threads);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& p : data) best = std::min(best, (p - queries[q]).norm());
+    EXPECT_DOUBLE_EQ(dist[q], best);
+    EXPECT_DOUBLE_EQ((data[nearest[q]] - queries[q]).norm(), best);
+  }
+}
+
+TEST(NearestPointIndex, MatchesBruteForce2D) { check_against_brute_force<2>(1); }
+TEST(NearestPointIndex, MatchesBruteForce3D) { check_against_brute_force<3>(1); }
+TEST(NearestPointIndex, MatchesBruteForceOnSeveralThreads) { check_against_brute_force<3>(2); }
+
+TEST(NearestPointIndex, DuplicatesAndSinglePointsWork) {
+  NearestPointIndex<3> one(Points<3>{Vec<3>(1, 2, 3)});
+  EXPECT_DOUBLE_EQ(one.distance(Vec<3>(1, 2, 4)), 1.0);
+  NearestPointIndex<3> dup(Points<3>(50, Vec<3>(0, 0, 0)));
+  EXPECT_DOUBLE_EQ(dup.distance(Vec<3>(0, 3, 4)), 5.0);
+}
+
+TEST(NearestPointIndex, RejectsEmptyAndNonFiniteInput) {
+  EXPECT_THROW(NearestPointIndex<3>(Points<3>{}), InvalidInput);
+  Points<3> p{Vec<3>(0, 0, 0), Vec<3>(std::nan(""), 0, 0)};
+  EXPECT_THROW(NearestPointIndex<3>{p}, InvalidInput);
+  p[1] = Vec<3>(std::numeric_limits<double>::infinity(), 0, 0);
+  EXPECT_THROW(NearestPointIndex<3>{p}, InvalidInput);
+}
+
+}  // namespace
+}  // namespace lsr
