@@ -18,14 +18,16 @@ bool in_range(double x, double lo, double hi) { return std::isfinite(x) && x > l
 // Lower bound on the vertices needed: every grid cell of side h_min holding a data point is
 // covered by simplices of size <= h_min, at least one vertex per such cell on average.
 template <int D>
-double occupied_cells(const Points<D>& points, double h) {
+double occupied_cells(const Points<D>& points, double h_min) {
+  // Coarser cells only lower the count, so clamping keeps a lower bound and the key in 64 bits.
+  const double h = std::max(h_min, std::ldexp(1.0, -20));
   std::unordered_set<std::uint64_t> cells;
   const double n = std::ceil(1.0 / h);
   for (const auto& p : points) {
     std::uint64_t key = 0;
     for (int d = 0; d < D; ++d) {
       const double c = std::clamp(std::floor(p[d] / h), 0.0, n);
-      key = key * std::uint64_t(n + 1) + std::uint64_t(c);  // fits: n^3 < 2^64 for n < 2^21
+      key = key * std::uint64_t(n + 1) + std::uint64_t(c);
     }
     cells.insert(key);
   }
@@ -125,10 +127,12 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   }
   KuhnBisectionForest<D> forest(cells);
   int passes = 0;
+  // One pass per bisection level from the background cells down to h_min.
+  const double expected_passes = std::max(1.0, std::ceil(D * std::log2(1.0 / (cells * o.h_min))));
   Candidates<D> cand = leaves_from(forest, 0);
   std::vector<double> dist;
   while (!cand.nodes.empty()) {
-    progress.update("mesh", -1.0);
+    progress.update("mesh", std::min(1.0, passes / expected_passes));
     data.query(cand.centroids, dist, nullptr, o.threads);
     const Index first_new = Index(forest.simplices().size());
     const Index vertices_before = Index(forest.vertices().size());

@@ -36,12 +36,11 @@ void require_valid_points(const Points<D>& points, const std::string& what) {
   }
 }
 
-#define LSR_INSTANTIATE(D)                                              \
-  template std::size_t count_non_finite<D>(const Points<D>&);          \
-  template Points<D> drop_non_finite<D>(const Points<D>&);             \
-  template void require_valid_points<D>(const Points<D>&, const std::string&);
-LSR_INSTANTIATE(2)
-LSR_INSTANTIATE(3)
-#undef LSR_INSTANTIATE
+template std::size_t count_non_finite<2>(const Points<2>&);
+template std::size_t count_non_finite<3>(const Points<3>&);
+template Points<2> drop_non_finite<2>(const Points<2>&);
+template Points<3> drop_non_finite<3>(const Points<3>&);
+template void require_valid_points<2>(const Points<2>&, const std::string&);
+template void require_valid_points<3>(const Points<3>&, const std::string&);
 
 }  // namespace lsr
