@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file p1_operators.h
+/// @brief Nodal derivatives by L2 projection on a fixed simplicial mesh (paper section 5.3):
+/// the gradient G (eq. 10-11), the divergence of a nodal vector field, and the curvature
+/// operator M = Div A^-1 G (eq. 12-14) in its symmetric form Lambda M = -G^T W G (appendix C).
+#pragma once
+
+#include "lsrecon/core/simplex_geometry.h"
+
+#include <Eigen/SparseCore>
+
+#include <vector>
+
+namespace lsr {
+
+using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, std::ptrdiff_t>;
+
+/// @brief The operators of one fixed mesh, assembled once.
+///
+/// Nodal vector fields are stored as one vector of D * #V entries, component k of vertex i at
+/// D * i + k.
+template <int D>
+struct P1Operators {
+  /// (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|  (eq. 11)
+  SparseRowMatrix gradient;
+  /// #V x (D #V): G^T, kept explicitly so that products with it run in parallel.
+  SparseRowMatrix gradient_transpose;
+  /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
+  /// projection eq. (12)-(14) apply to the components of a nodal field.
+  SparseRowMatrix divergence;
+  Eigen::VectorXd ball_measure;  ///< #V: |B_i| (the diagonal of Lambda)
+  std::vector<char> on_boundary; ///< #V: 1 for vertices on the walls of the box [0,1]^D
+
+  /// @brief |(G u)_i| per vertex.
+  Eigen::VectorXd gradient_norms(const Eigen::VectorXd& u) const;
+
+  /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)
+  /// (eq. 14), on every vertex. Accurate on vertices away from the box walls.
+  Eigen::VectorXd curvature(const Eigen::VectorXd& u, double eps_a) const;
+};
+
+/// @brief Assembles the operators of a mesh.
+template <int D>
+P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& geometry);
+
+/// @brief The symmetric form of the curvature operator at a frozen gradient:
+/// apply(v) = G^T W G v with W = diag(|B_j| / a_j) per component, so that
+/// Lambda M v = -apply(v) on rows of vertices away from the box walls.
+template <int D>
+class SymmetricCurvatureOperator {
+ public:
+  /// @param a #V: the frozen |grad u^n|, already bounded below by eps_a.
+  SymmetricCurvatureOperator(const P1Operators<D>& ops, const Eigen::VectorXd& a);
+
+  /// @brief G^T W G v.
+  Eigen::VectorXd apply(const Eigen::VectorXd& v) const;
+  /// @brief diag(G^T W G), for Jacobi preconditioning.
+  Eigen::VectorXd diagonal() const;
+
+ private:
+  const P1Operators<D>& ops_;
+  Eigen::VectorXd weights_;  ///< D #V: |B_j| / a_j repeated per component
+};
+
+}  // namespace lsr
