@@ -8,6 +8,7 @@
 
 #include <flann/flann.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <thread>
 
@@ -68,6 +69,32 @@ void NearestPointIndex<D>::query(const Points<D>& queries, std::vector<double>& 
   for (std::size_t i = 0; i < n; ++i) {
     distance[i] = std::sqrt(distance[i]);
     if (nearest) (*nearest)[i] = Index(idx[i]);
+  }
+}
+
+template <int D>
+void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, std::vector<Index>& nearest,
+                                   int threads) const {
+  const std::size_t n = queries.size();
+  const std::size_t kk = std::size_t(std::max(1, std::min<int>(k, int(impl_->points.size()))));
+  nearest.assign(n * std::size_t(k), -1);
+  if (n == 0) return;
+  std::vector<double> flat(n * D);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) flat[i * D + d] = queries[i][d];
+  }
+  std::vector<std::size_t> idx(n * kk);
+  std::vector<double> dist2(n * kk);
+  flann::Matrix<double> q(flat.data(), n, D);
+  flann::Matrix<std::size_t> indices(idx.data(), n, kk);
+  flann::Matrix<double> dists(dist2.data(), n, kk);
+  flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, /*sorted=*/true);
+  params.cores = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  impl_->index->knnSearch(q, indices, dists, kk, params);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < std::size_t(k); ++j) {
+      nearest[i * k + j] = Index(idx[i * kk + std::min(j, kk - 1)]);
+    }
   }
 }
 

@@ -30,6 +30,10 @@ class NearestPointIndex {
   void query(const Points<D>& queries, std::vector<double>& distance,
              std::vector<Index>* nearest = nullptr, int threads = 0) const;
 
+  /// @brief The k nearest data points of each query (k * #queries indices, nearest first;
+  /// fewer than k points in the set repeat the last found index).
+  void query_k(const Points<D>& queries, int k, std::vector<Index>& nearest, int threads = 0) const;
+
   /// @brief Distance from one point to the data.
   double distance(const Vec<D>& q) const;
 

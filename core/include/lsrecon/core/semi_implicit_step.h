@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file semi_implicit_step.h
+/// @brief One time step of du/dt = |grad u| (beta kappa(u) + alpha d) (eq. 1 with a curvature
+/// weight beta), semi-implicit as eq. (9)/(16): curvature implicit, |grad u| frozen at t_n.
+///
+/// Multiplying (I - dt beta D M) u' = u + dt alpha D d by Lambda D^-1 and using
+/// Lambda M = -G^T W G gives the symmetric positive definite system
+///     (Lambda D^-1 + dt beta G^T W G) u' = Lambda D^-1 u + dt alpha Lambda d,
+/// solved matrix-free by Jacobi-preconditioned CG warm-started from u. Vertices on the walls of
+/// the box are advanced by the data term only and eliminated: the paper's natural Neumann rows
+/// there are anti-diffusive (DESIGN.md section 9). The paper's unsymmetric form with GMRES is
+/// kept as a reference path, with the same wall rows.
+#pragma once
+
+#include "lsrecon/core/conjugate_gradient.h"
+#include "lsrecon/core/p1_operators.h"
+
+namespace lsr {
+
+enum class LinearSolver {
+  conjugate_gradient,  ///< SPD form, matrix-free, Jacobi preconditioner (default)
+  gmres_reference,     ///< the paper's (I - dt beta D M), assembled, Eigen's GMRES
+};
+
+/// @brief Parameters of one step, in unit-box units.
+struct StepParameters {
+  double time_step = 0.0;         ///< dt > 0
+  double alpha = 2.0;             ///< weight of the attraction alpha d(x)
+  double curvature_weight = 1.0;  ///< beta >= 0, weight of the curvature
+  double min_gradient = 1e-2;     ///< eps_a: |grad u| is bounded below by it
+  double solver_tolerance = 1e-8; ///< relative residual of the linear solve
+  int max_solver_iterations = 2000;
+  LinearSolver solver = LinearSolver::conjugate_gradient;
+};
+
+/// @brief u at t_{n+1} from u at t_n (both #V), distance d (#V).
+template <int D>
+Eigen::VectorXd semi_implicit_step(const P1Operators<D>& ops, const Eigen::VectorXd& distance,
+                                   const Eigen::VectorXd& u, const StepParameters& p,
+                                   SolverReport* report = nullptr);
+
+}  // namespace lsr
