@@ -61,12 +61,12 @@ double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p) {
 }  // namespace
 
 template <int D>
-RenormalizationReport renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u,
+RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u,
                                   const Eigen::VectorXd& gradient_norm, double band, int threads) {
-  RenormalizationReport report;
+  RenormalizationReport<D> report;
   const std::vector<double> values(u.data(), u.data() + u.size());
-  const LevelSetMesh<D> front = extract_zero_level_set(mesh, values);
-  report.front_facets = Index(front.facets.size());
+  report.front = extract_zero_level_set(mesh, values);
+  const LevelSetMesh<D>& front = report.front;
   if (front.facets.empty()) return report;
 
   Points<D> centroids(front.facets.size());
@@ -112,9 +112,9 @@ RenormalizationReport renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u
   return report;
 }
 
-template RenormalizationReport renormalize<2>(const SimplexMesh<2>&, Eigen::VectorXd&,
+template RenormalizationReport<2> renormalize<2>(const SimplexMesh<2>&, Eigen::VectorXd&,
                                                    const Eigen::VectorXd&, double, int);
-template RenormalizationReport renormalize<3>(const SimplexMesh<3>&, Eigen::VectorXd&,
+template RenormalizationReport<3> renormalize<3>(const SimplexMesh<3>&, Eigen::VectorXd&,
                                                    const Eigen::VectorXd&, double, int);
 
 }  // namespace lsr

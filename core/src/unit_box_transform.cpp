@@ -37,6 +37,19 @@ UnitBoxTransform<D> UnitBoxTransform<D>::fit(const Points<D>& points, double mar
 }
 
 template <int D>
+UnitBoxTransform<D> UnitBoxTransform<D>::fit_ball(const Points<D>& points, double radius) {
+  if (!(radius > 0.0 && radius <= 0.5)) {
+    throw InvalidInput("ball radius " + std::to_string(radius) + " is outside (0, 0.5]",
+                       "use a radius such as 0.4");
+  }
+  UnitBoxTransform t = fit(points, 0.0);  // validates and finds the bounding-box centre
+  double reach = 0.0;
+  for (const auto& p : points) reach = std::max(reach, (p - t.center_).norm());
+  t.scale_ = radius / reach;
+  return t;
+}
+
+template <int D>
 Points<D> UnitBoxTransform<D>::to_unit(const Points<D>& xs) const {
   Points<D> out;
   out.reserve(xs.size());

@@ -4,15 +4,16 @@
 /// piecewise-linear zero set, so that |grad u| stays close to 1.
 #pragma once
 
-#include "lsrecon/core/simplex_geometry.h"
+#include "lsrecon/core/level_set_extraction.h"
 
 #include <Eigen/Core>
 
 namespace lsr {
 
 /// @brief What renormalize() did.
+template <int D>
 struct RenormalizationReport {
-  Index front_facets = 0;    ///< segments / triangles of the zero set
+  LevelSetMesh<D> front;     ///< the zero set the distances were measured to
   Index band_vertices = 0;   ///< vertices given their exact distance
 };
 
@@ -24,7 +25,7 @@ struct RenormalizationReport {
 /// picks the vertices to compute (those below 2 band).
 /// @param threads threads for the queries, 0 for all cores
 template <int D>
-RenormalizationReport renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u,
+RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u,
                                   const Eigen::VectorXd& gradient_norm, double band,
                                   int threads = 0);
 

@@ -17,6 +17,11 @@ class UnitBoxTransform {
   /// [0, 0.5).
   static UnitBoxTransform fit(const Points<D>& points, double margin);
 
+  /// @brief Maps the ball around the bounding-box centre that holds every point onto the ball
+  /// of the given radius around the box centre (0.5, ..., 0.5).
+  /// @throw InvalidInput as fit(), or if radius is not in (0, 0.5].
+  static UnitBoxTransform fit_ball(const Points<D>& points, double radius);
+
   Vec<D> to_unit(const Vec<D>& x) const { return (x - center_) * scale_ + Vec<D>::Constant(0.5); }
   Vec<D> from_unit(const Vec<D>& y) const { return (y - Vec<D>::Constant(0.5)) / scale_ + center_; }
   Points<D> to_unit(const Points<D>& xs) const;

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_reconstruction.h
+/// @brief The whole pipeline of the paper (figure 2) as one call: unoriented points in, closed
+/// curves (2D) or a closed oriented surface with normals (3D) out, in the input's coordinates.
+///
+/// The front evolves by du/dt = |grad u| (beta kappa(u) + alpha d(x)). The curvature weight
+/// beta is the paper's 1 by default scaled as DESIGN.md section 9 measured: with beta = 1 the
+/// flow bridges concavities (they stall |kappa| / alpha outside the data); beta = 0.3 h_min^2
+/// keeps that stall below 0.15 h_min for features down to h_min and lets dt = 10 h_min work.
+#pragma once
+
+#include "lsrecon/core/adaptive_refinement.h"
+#include "lsrecon/core/level_set_extraction.h"
+#include "lsrecon/core/progress.h"
+#include "lsrecon/core/semi_implicit_step.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace lsr {
+
+/// @brief Where the front starts.
+enum class InitialFront {
+  enclosing,  ///< a circle / sphere around all the data; alpha > 0 (the front shrinks)
+  inside,     ///< a circle / sphere around the data's centroid, inside the shape; alpha < 0
+};
+
+/// @brief Parameters. Lengths are relative to the unit box the data is mapped into (the data's
+/// bounding ball becomes a ball of radius 0.4); 0 means "choose from the data".
+struct ReconstructionOptions {
+  double h_min = 0.0;  ///< finest mesh size; 0: the median spacing of the data, clamped
+  double h_max = 1.0 / 8;     ///< coarsest mesh size
+  double grading = 2.0;       ///< see AdaptiveMeshOptions::grading
+  double alpha = 0.0;         ///< attraction weight; 0: +2 enclosing, -2 inside
+  double curvature_weight = -1.0;  ///< beta >= 0; negative: 0.3 h_min^2
+  double time_step = 0.0;     ///< dt; 0: 10 h_min (the paper's)
+  double tolerance = 0.0;     ///< eps of the stopping test max |u(x)| <= eps; 0: h_min
+  int max_iterations = 1000;
+  int renormalization_interval = 1;  ///< renormalise every k steps (DESIGN.md section 9: 1-2)
+  int patience = 5;  ///< stop after this many steps without a better residual (noisy data)
+  /// Pin the front at data points it has reached (d := 0 on the vertices of their simplices).
+  /// The unsigned d never stops a front that reaches the data, and its P1 interpolant is O(h)
+  /// at the data points, so converged parts pass through the data while slower parts (holes,
+  /// concavities) still travel; pinning holds them (measured: the torus needs it).
+  bool pin_reached_data = true;
+  InitialFront initial_front = InitialFront::enclosing;
+  LinearSolver solver = LinearSolver::conjugate_gradient;
+  double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
+  Index max_vertices = 20'000'000;  ///< refuse larger meshes (lsr::MeshTooLarge)
+  int threads = 0;  ///< 0: all cores
+};
+
+enum class ReconstructionStatus {
+  converged,      ///< max |u| on the data fell to the tolerance
+  not_converged,  ///< stopped by patience or max_iterations; the best iterate is returned
+  cancelled,      ///< the progress callback asked to stop; the best iterate so far, if any
+};
+
+/// @brief What came out, and how.
+template <int D>
+struct ReconstructionResult {
+  ReconstructionStatus status = ReconstructionStatus::not_converged;
+  LevelSetMesh<D> surface;          ///< in input coordinates; facets oriented outwards
+  Points<D> normals;                ///< #surface vertices, unit, outward (from grad u)
+  std::vector<std::vector<Index>> loops;  ///< 2D only: closed loops in order
+  int iterations = 0;               ///< time steps taken
+  int best_iteration = 0;           ///< the step whose u is returned
+  double residual = 0.0;            ///< max |u| on the data at best_iteration, input units
+  double tolerance = 0.0;           ///< the stopping tolerance, input units
+  std::vector<double> residual_history;  ///< max |u| on the data per step, input units
+  double h_min = 0.0;               ///< the finest mesh size used, unit box
+  double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
+  Index mesh_vertices = 0, mesh_simplices = 0;
+  std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite
+  long solver_iterations = 0;       ///< linear-solver iterations, summed over the steps
+  std::map<std::string, double> seconds;  ///< wall time per stage
+};
+
+/// @brief Reconstructs from points (#N, any scale).
+/// @throw InvalidInput for too few or degenerate points and options out of range (the message
+/// says what to change); MeshTooLarge when the mesh would exceed max_vertices. Cancellation
+/// and non-convergence are statuses, not exceptions.
+template <int D>
+ReconstructionResult<D> reconstruct(const Points<D>& points, const ReconstructionOptions& options = {},
+                                    const ProgressCallback& progress = {});
+
+}  // namespace lsr
