@@ -12,8 +12,6 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -91,13 +89,49 @@ double median_spacing(const NearestPointIndex<D>& index) {
   return spacing[spacing.size() / 2];
 }
 
+// Median thickness of the data across the curve / surface: sqrt of the smallest eigenvalue
+// of the covariance of each point's k nearest neighbours. Clean samples give their sagitta
+// (tiny), Gaussian noise of deviation sigma gives about sigma.
 template <int D>
-double automatic_h_min(const NearestPointIndex<D>& index) {
-  // The mesh resolves what the sampling resolves: finer than the spacing only lets the front
-  // sag between samples. Clamped to what 2 cores handle in seconds.
+double noise_level(const NearestPointIndex<D>& index) {
+  const Points<D>& p = index.points();
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / 5000);
+  Points<D> queries;
+  for (std::size_t i = 0; i < p.size(); i += stride) queries.push_back(p[i]);
+  const int k = 16;
+  std::vector<Index> nearest;
+  index.query_k(queries, k, nearest);
+  std::vector<double> thickness;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    Vec<D> mean = Vec<D>::Zero();
+    for (int j = 0; j < k; ++j) mean += p[nearest[q * k + j]];
+    mean /= double(k);
+    Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
+    for (int j = 0; j < k; ++j) {
+      const Vec<D> e = p[nearest[q * k + j]] - mean;
+      cov += e * e.transpose() / double(k);
+    }
+    thickness.push_back(std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>>(cov).eigenvalues()[0])));
+  }
+  std::nth_element(thickness.begin(), thickness.begin() + thickness.size() / 2, thickness.end());
+  return thickness[thickness.size() / 2];
+}
+
+// The mesh resolves what the sampling resolves, but not the noise: finer than the spacing only
+// lets the front sag between samples, finer than the noise makes islands (measured: 5 loops
+// on a noisy circle). Clamped to what 2 cores handle in seconds.
+template <int D>
+double automatic_h_min(double spacing, double noise) {
   const double lo = D == 2 ? 1.0 / 4096 : 1.0 / 512;
   const double hi = D == 2 ? 1.0 / 64 : 1.0 / 32;
-  return std::clamp(median_spacing(index), lo, hi);
+  return std::clamp(std::max(spacing, 1.5 * noise), lo, hi);
+}
+
+// beta = 0.3 h^2 keeps concavities within 0.15 h of the data (DESIGN.md section 9). Noise makes
+// bumps of height sigma and width ~2h; flattening them needs beta kappa >= alpha sigma, i.e.
+// beta ~ 2 |alpha| h^2: the weight grows towards that as sigma approaches h.
+double automatic_curvature_weight(double h_min, double noise) {
+  return (0.3 + 4.0 * std::min(1.0, noise / h_min)) * h_min * h_min;
 }
 
 void check_options(const ReconstructionOptions& o) {
@@ -234,7 +268,9 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   const NearestPointIndex<D> data(box.to_unit(points));
   clock.end("normalize");
 
-  r.h_min = o.h_min > 0.0 ? o.h_min : automatic_h_min(data);
+  const double spacing = median_spacing(data);
+  r.noise = noise_level(data);
+  r.h_min = o.h_min > 0.0 ? o.h_min : automatic_h_min<D>(spacing, r.noise);
   AdaptiveMeshOptions mo;
   mo.h_min = r.h_min;
   mo.h_max = std::max(o.h_max, r.h_min);
@@ -262,11 +298,13 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
   clock.end("distance");
 
-  const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh));
+  const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh),
+                                                   o.solver == LinearSolver::gmres_reference);
   StepParameters step;
-  step.time_step = o.time_step > 0.0 ? o.time_step : 10.0 * r.h_min;
   step.alpha = o.alpha != 0.0 ? o.alpha : (o.initial_front == InitialFront::enclosing ? 2.0 : -2.0);
-  step.curvature_weight = o.curvature_weight >= 0.0 ? o.curvature_weight : 0.3 * r.h_min * r.h_min;
+  step.time_step = o.time_step > 0.0 ? o.time_step : 0.2 / std::abs(step.alpha);
+  step.curvature_weight =
+      o.curvature_weight >= 0.0 ? o.curvature_weight : automatic_curvature_weight(r.h_min, r.noise);
   step.solver_tolerance = o.solver_tolerance;
   step.solver = o.solver;
   r.time_step = step.time_step;
@@ -278,7 +316,7 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   clock.end("setup");
 
   // Between samples the front may sit half a sample spacing away from the data.
-  const double front_tolerance = eps + 0.5 * median_spacing(data);
+  const double front_tolerance = eps + 0.5 * spacing;
   double front_distance = std::numeric_limits<double>::infinity();
   std::vector<char> pinned(at.size(), 0);
   Eigen::VectorXd best = u;
@@ -303,7 +341,6 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
       // Converged when every data point is within eps of the front and the front within
       // front_tolerance of the data; the residual is the worse of the two, in units of eps.
       const double residual = std::max(data_residual, front_distance * eps / front_tolerance);
-      if (std::getenv("LSR_DEBUG")) std::fprintf(stderr, "step %d data %.2f front %.2f (h)\n", n, data_residual / r.h_min, front_distance / r.h_min);
       r.residual_history.push_back(residual / box.scale());
       r.iterations = n;
       if (residual < best_residual) {
@@ -322,6 +359,7 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
     r.status = ReconstructionStatus::cancelled;
   }
   r.residual = best_residual / box.scale();
+  r.noise /= box.scale();
   attach_output(r, mesh, ops, best, box);
   clock.end("extract");
   return r;

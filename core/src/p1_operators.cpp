@@ -2,6 +2,8 @@
 /// @file p1_operators.cpp
 #include "lsrecon/core/p1_operators.h"
 
+#include <stdexcept>
+
 namespace lsr {
 namespace {
 
@@ -10,12 +12,12 @@ namespace {
 // (i, D j + k).
 template <int D>
 void assemble_projection(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g,
-                         SparseRowMatrix& gradient, SparseRowMatrix& divergence) {
+                         SparseRowMatrix& gradient, SparseRowMatrix* divergence) {
   const Index nv = Index(mesh.vertices.size());
   std::vector<Eigen::Triplet<double, std::ptrdiff_t>> grad, div;
   const std::size_t estimate = std::size_t(g.ball_simplices.size()) * (D + 1) * D;
   grad.reserve(estimate);
-  div.reserve(estimate);
+  if (divergence) div.reserve(estimate);
   for (Index i = 0; i < nv; ++i) {
     for (Index b = g.ball_offsets[i]; b < g.ball_offsets[i + 1]; ++b) {
       const Index s = g.ball_simplices[b];
@@ -25,15 +27,17 @@ void assemble_projection(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g
         for (int k = 0; k < D; ++k) {
           const double c = w * g.gradients[s][j][k];
           grad.emplace_back(std::ptrdiff_t(D) * i + k, vj, c);
-          div.emplace_back(i, std::ptrdiff_t(D) * vj + k, c);
+          if (divergence) div.emplace_back(i, std::ptrdiff_t(D) * vj + k, c);
         }
       }
     }
   }
   gradient.resize(std::ptrdiff_t(D) * nv, nv);
   gradient.setFromTriplets(grad.begin(), grad.end());
-  divergence.resize(nv, std::ptrdiff_t(D) * nv);
-  divergence.setFromTriplets(div.begin(), div.end());
+  if (divergence) {
+    divergence->resize(nv, std::ptrdiff_t(D) * nv);
+    divergence->setFromTriplets(div.begin(), div.end());
+  }
 }
 
 template <int D>
@@ -47,9 +51,10 @@ Eigen::VectorXd norms_per_vertex(const Eigen::VectorXd& field) {
 }  // namespace
 
 template <int D>
-P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g) {
+P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g,
+                                     bool with_divergence) {
   P1Operators<D> ops;
-  assemble_projection(mesh, g, ops.gradient, ops.divergence);
+  assemble_projection(mesh, g, ops.gradient, with_divergence ? &ops.divergence : nullptr);
   ops.gradient_transpose = ops.gradient.transpose();
   ops.ball_measure = Eigen::Map<const Eigen::VectorXd>(g.ball_measure.data(), Eigen::Index(g.ball_measure.size()));
   ops.on_boundary.resize(mesh.vertices.size());
@@ -67,6 +72,7 @@ Eigen::VectorXd P1Operators<D>::gradient_norms(const Eigen::VectorXd& u) const {
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::curvature(const Eigen::VectorXd& u, double eps_a) const {
+  if (divergence.rows() == 0) throw std::logic_error("curvature() needs operators assembled with_divergence");
   Eigen::VectorXd q = gradient * u;
   const Eigen::VectorXd a = norms_per_vertex<D>(q).cwiseMax(eps_a);
   for (Eigen::Index i = 0; i < a.size(); ++i) q.template segment<D>(D * i) /= a[i];
@@ -103,8 +109,8 @@ Eigen::VectorXd SymmetricCurvatureOperator<D>::diagonal() const {
 
 template struct P1Operators<2>;
 template struct P1Operators<3>;
-template P1Operators<2> assemble_p1_operators<2>(const SimplexMesh<2>&, const SimplexGeometry<2>&);
-template P1Operators<3> assemble_p1_operators<3>(const SimplexMesh<3>&, const SimplexGeometry<3>&);
+template P1Operators<2> assemble_p1_operators<2>(const SimplexMesh<2>&, const SimplexGeometry<2>&, bool);
+template P1Operators<3> assemble_p1_operators<3>(const SimplexMesh<3>&, const SimplexGeometry<3>&, bool);
 template class SymmetricCurvatureOperator<2>;
 template class SymmetricCurvatureOperator<3>;
 

@@ -4,6 +4,8 @@
 
 #include <unsupported/Eigen/IterativeSolvers>
 
+#include <stdexcept>
+
 namespace lsr {
 namespace {
 
@@ -58,6 +60,9 @@ template <int D>
 Eigen::VectorXd step_gmres(const P1Operators<D>& ops, const Eigen::VectorXd& d,
                            const Eigen::VectorXd& u, const Eigen::VectorXd& a,
                            const StepParameters& p, SolverReport* report) {
+  if (ops.divergence.rows() == 0) {
+    throw std::logic_error("the GMRES reference needs operators assembled with_divergence");
+  }
   // M = Div A^-1 G, literally (eq. 14).
   Eigen::VectorXd inverse_a(D * a.size());
   for (Eigen::Index j = 0; j < a.size(); ++j) inverse_a.template segment<D>(D * j).setConstant(1.0 / a[j]);

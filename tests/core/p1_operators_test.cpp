@@ -24,7 +24,7 @@ Fixture<D> fixture(const Points<D>& samples, double h_min) {
   AdaptiveMeshOptions o;
   o.h_min = h_min;
   Fixture<D> f{build_adaptive_mesh(NearestPointIndex<D>(samples), o), {}};
-  f.ops = assemble_p1_operators(f.mesh.mesh, compute_simplex_geometry(f.mesh.mesh));
+  f.ops = assemble_p1_operators(f.mesh.mesh, compute_simplex_geometry(f.mesh.mesh), true);
   return f;
 }
 
@@ -90,7 +90,7 @@ TEST(P1Operators, SymmetricFormMatchesThePaperOperatorOnInteriorRows) {
 template <int D, class Shape>
 double curvature_rms_error(const Shape& shape, int n) {
   const AdaptiveMesh<D> m = leaf_mesh(KuhnBisectionForest<D>(n));
-  const P1Operators<D> ops = assemble_p1_operators(m.mesh, compute_simplex_geometry(m.mesh));
+  const P1Operators<D> ops = assemble_p1_operators(m.mesh, compute_simplex_geometry(m.mesh), true);
   const Eigen::VectorXd u = nodal<D>(m.mesh, [&](const Vec<D>& x) { return shape.signed_distance(x); });
   const Eigen::VectorXd kappa = ops.curvature(u, 1e-6);
   double sum2 = 0.0;

@@ -24,7 +24,7 @@ Problem2D problem(double h_min) {
   o.h_min = h_min;
   const NearestPointIndex<2> index(data.sample(4000));
   Problem2D p{build_adaptive_mesh(index, o), {}, {}, {}};
-  p.ops = assemble_p1_operators(p.mesh.mesh, compute_simplex_geometry(p.mesh.mesh));
+  p.ops = assemble_p1_operators(p.mesh.mesh, compute_simplex_geometry(p.mesh.mesh), true);
   std::vector<double> d;
   index.query(p.mesh.mesh.vertices, d);
   p.d = Eigen::Map<Eigen::VectorXd>(d.data(), Eigen::Index(d.size()));

@@ -29,12 +29,19 @@ enum class InitialFront {
 /// @brief Parameters. Lengths are relative to the unit box the data is mapped into (the data's
 /// bounding ball becomes a ball of radius 0.4); 0 means "choose from the data".
 struct ReconstructionOptions {
-  double h_min = 0.0;  ///< finest mesh size; 0: the median spacing of the data, clamped
+  /// Finest mesh size; 0: the median spacing of the data or 1.5 times its estimated noise,
+  /// whichever is larger, clamped to [1/4096, 1/64] (2D) or [1/512, 1/32] (3D).
+  double h_min = 0.0;
   double h_max = 1.0 / 8;     ///< coarsest mesh size
   double grading = 2.0;       ///< see AdaptiveMeshOptions::grading
   double alpha = 0.0;         ///< attraction weight; 0: +2 enclosing, -2 inside
-  double curvature_weight = -1.0;  ///< beta >= 0; negative: 0.3 h_min^2
-  double time_step = 0.0;     ///< dt; 0: 10 h_min (the paper's)
+  /// beta >= 0, the smoothness knob; negative: (0.3 + 4 min(1, noise / h_min)) h_min^2.
+  double curvature_weight = -1.0;
+  /// dt; 0: 0.2 / |alpha|. The front closes in on the data like exp(-alpha t), and the
+  /// explicit data term's CFL limit on the graded mesh (sizes ~ c d) is about c / alpha, so dt
+  /// is a fraction of 1/alpha, independent of h_min. The paper's 10 h_min equals it at
+  /// h_min = 1/100; at h_min = 1/2000 it needed 1000+ steps where this needs 58 (measured).
+  double time_step = 0.0;
   double tolerance = 0.0;     ///< eps of the stopping test max |u(x)| <= eps; 0: h_min
   int max_iterations = 1000;
   int renormalization_interval = 1;  ///< renormalise every k steps (DESIGN.md section 9: 1-2)
@@ -70,6 +77,7 @@ struct ReconstructionResult {
   double tolerance = 0.0;           ///< the stopping tolerance, input units
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units
   double h_min = 0.0;               ///< the finest mesh size used, unit box
+  double noise = 0.0;               ///< estimated noise deviation of the data, input units
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;
   std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite

@@ -26,7 +26,8 @@ struct P1Operators {
   /// #V x (D #V): G^T, kept explicitly so that products with it run in parallel.
   SparseRowMatrix gradient_transpose;
   /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
-  /// projection eq. (12)-(14) apply to the components of a nodal field.
+  /// projection eq. (12)-(14) apply to the components of a nodal field. Empty unless assembled
+  /// with_divergence (only the paper-form reference and curvature() need it).
   SparseRowMatrix divergence;
   Eigen::VectorXd ball_measure;  ///< #V: |B_i| (the diagonal of Lambda)
   std::vector<char> on_boundary; ///< #V: 1 for vertices on the walls of the box [0,1]^D
@@ -36,12 +37,15 @@ struct P1Operators {
 
   /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)
   /// (eq. 14), on every vertex. Accurate on vertices away from the box walls.
+  /// @throw std::logic_error if the divergence was not assembled.
   Eigen::VectorXd curvature(const Eigen::VectorXd& u, double eps_a) const;
 };
 
-/// @brief Assembles the operators of a mesh.
+/// @brief Assembles the operators of a mesh (the divergence only when asked: it doubles the
+/// assembly time).
 template <int D>
-P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& geometry);
+P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& geometry,
+                                     bool with_divergence = false);
 
 /// @brief The symmetric form of the curvature operator at a frozen gradient:
 /// apply(v) = G^T W G v with W = diag(|B_j| / a_j) per component, so that

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products on Vec<3>
 
 #include <array>
 #include <cstdint>

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_reconstruction_test.cpp
+/// @brief The paper's experiments end to end, and the pipeline's handling of bad input.
+///
+/// Tolerances follow from the stopping test: when it fires, every data point is within
+/// eps = h_min of the front and the front within eps + spacing / 2 of the data, and the data
+/// lie on the true shape; so the two-sided distance to the truth is below 2 h_min, plus the
+/// truth's own sampling where it is measured on samples.
+#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/core/surface_topology.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace lsr {
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+// r(t) = R (1 + a cos 5t): five concave valleys.
+Points<2> star(int n, Vec<2> center = Vec<2>(0, 0), double radius = 1.0) {
+  Points<2> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * kPi * i / n;
+    const double r = radius * (1 + 0.3 * std::cos(5 * t));
+    p.push_back(center + r * Vec<2>(std::cos(t), std::sin(t)));
+  }
+  return p;
+}
+
+template <int D>
+double max_distance(const Points<D>& from, const NearestPointIndex<D>& to) {
+  std::vector<double> d;
+  to.query(from, d);
+  return *std::max_element(d.begin(), d.end());
+}
+
+TEST(LevelSetReconstruction, ConcaveStarConvergesToOneCurveWithinTwoHmin) {
+  const Points<2> truth = star(100000);
+  const Points<2> data = star(4000);
+  const auto r = reconstruct<2>(data);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  ASSERT_EQ(r.loops.size(), 1u);
+  const double h = r.tolerance;  // h_min in input units
+  const NearestPointIndex<2> truth_index(truth);
+  EXPECT_LE(max_distance(r.surface.vertices, truth_index), 2 * h);
+  // Output vertices lie at most one edge (sqrt 2 h) apart along the curve.
+  EXPECT_LE(max_distance(truth, NearestPointIndex<2>(r.surface.vertices)), 2 * h + std::sqrt(2.0) * h);
+}
+
+TEST(LevelSetReconstruction, NoisyCircleGivesOneSmoothCurveWithErrorOfTheNoise) {
+  // Section 6.4.2: Gaussian noise by Box-Muller, sigma = 2 d_min.
+  const int n = 2000;
+  const Points<2> clean = Circle{Vec<2>(0, 0), 1.0}.sample(n);
+  const double d_min = 2 * std::sin(kPi / n);
+  const double sigma = 2 * d_min;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(std::nextafter(0.0, 1.0), 1.0);
+  Points<2> noisy;
+  for (const auto& p : clean) {
+    const double u1 = unit(rng), u2 = unit(rng);
+    const double radius = std::sqrt(-2 * std::log(u1));
+    noisy.push_back(p + sigma * radius * Vec<2>(std::cos(2 * kPi * u2), std::sin(2 * kPi * u2)));
+  }
+  const auto r = reconstruct<2>(noisy);
+  ASSERT_EQ(r.loops.size(), 1u);
+  double mean = 0.0;
+  for (const auto& v : r.surface.vertices) mean += std::abs(v.norm() - 1.0);
+  mean /= double(r.surface.vertices.size());
+  // The front settles within the noise band: its mean distance to the clean circle is below
+  // the mean |noise| along the normal (sigma sqrt(2/pi)) plus the 2 h_min of the method.
+  EXPECT_LE(mean, sigma * std::sqrt(2 / kPi) + 2 * r.tolerance);
+}
+
+TEST(LevelSetReconstruction, InsideStartFindsTheSameCurveAsTheEnclosingStart) {
+  const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(2000);
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 512;
+  const auto outside = reconstruct<2>(data, o);
+  o.initial_front = InitialFront::inside;
+  const auto inside = reconstruct<2>(data, o);
+  ASSERT_EQ(inside.loops.size(), 1u);
+  EXPECT_EQ(inside.status, ReconstructionStatus::converged);
+  EXPECT_LT(inside.alpha, 0.0);
+  const NearestPointIndex<2> other(outside.surface.vertices);
+  EXPECT_LE(max_distance(inside.surface.vertices, other), 3 * inside.tolerance);
+}
+
+TEST(LevelSetReconstruction, ThreeSeparateShapesGiveThreeCurvesFromOneEnclosingStart) {
+  Points<2> data = Circle{Vec<2>(-1.2, 0), 0.5}.sample(1500);
+  for (const auto& p : Circle{Vec<2>(0.6, 0.8), 0.5}.sample(1500)) data.push_back(p);
+  for (const auto& p : star(2000, Vec<2>(0.6, -0.9), 0.5)) data.push_back(p);
+  const auto r = reconstruct<2>(data);
+  EXPECT_EQ(r.loops.size(), 3u);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+}
+
+void expect_closed_surface(const ReconstructionResult<3>& r, int components, std::vector<int> genus) {
+  const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
+  EXPECT_TRUE(t.watertight && t.edge_manifold && t.vertex_manifold && t.oriented);
+  EXPECT_EQ(t.components, components);
+  std::vector<int> g = t.genus;
+  std::sort(g.begin(), g.end());
+  EXPECT_EQ(g, genus);
+  EXPECT_GT(t.signed_volume, 0.0);
+  // Normals from grad u point outwards: along the outward facet normals.
+  double agreement = 0.0;
+  for (const auto& f : r.surface.facets) {
+    const Vec<3> n = (r.surface.vertices[f[1]] - r.surface.vertices[f[0]])
+                         .cross(r.surface.vertices[f[2]] - r.surface.vertices[f[0]]);
+    agreement += n.dot(r.normals[f[0]] + r.normals[f[1]] + r.normals[f[2]]) > 0 ? 1 : 0;
+  }
+  EXPECT_GE(agreement / double(r.surface.facets.size()), 0.99);
+}
+
+template <class Shape>
+double chamfer(const ReconstructionResult<3>& r, const Shape& shape) {
+  double sum = 0.0;
+  for (const auto& v : r.surface.vertices) sum += std::abs(shape.signed_distance(v));
+  return sum / double(r.surface.vertices.size());
+}
+
+TEST(LevelSetReconstruction, SphereFromUnorientedPoints) {
+  const Sphere s{Vec<3>(1, 2, 3), 1.0};
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 64;
+  const auto r = reconstruct<3>(s.sample(20000), o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  expect_closed_surface(r, 1, {0});
+  EXPECT_LE(chamfer(r, s), 2 * r.tolerance);
+  double worst = 0.0;
+  for (const auto& v : r.surface.vertices) worst = std::max(worst, std::abs(s.signed_distance(v)));
+  EXPECT_LE(worst, 2 * r.tolerance);
+}
+
+TEST(LevelSetReconstruction, TorusHasGenusOne) {
+  const Torus t{Vec<3>(0, 0, 0), 1.0, 0.4};
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 64;
+  const auto r = reconstruct<3>(t.sample(20000), o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  expect_closed_surface(r, 1, {1});
+  EXPECT_LE(chamfer(r, t), 2 * r.tolerance);
+}
+
+TEST(LevelSetReconstruction, TwoDisjointSpheresAreTwoComponents) {
+  const std::vector<Sphere> spheres{{Vec<3>(-1.3, 0, 0), 1.0}, {Vec<3>(1.3, 0, 0), 1.0}};
+  Points<3> data = spheres[0].sample(10000);
+  for (const auto& p : spheres[1].sample(10000)) data.push_back(p);
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 64;
+  const auto r = reconstruct<3>(data, o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  expect_closed_surface(r, 2, {0, 0});
+  double sum = 0.0;
+  for (const auto& v : r.surface.vertices) sum += std::abs(union_signed_distance<Sphere, 3>(spheres, v));
+  EXPECT_LE(sum / double(r.surface.vertices.size()), 2 * r.tolerance);
+}
+
+TEST(LevelSetReconstruction, LargeTimeStepsStayStable) {
+  // Unconditional stability (paper 5.2): dt = 100 h_min neither blows up nor loses the curve.
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 256;
+  o.time_step = 100 * o.h_min;
+  const auto r = reconstruct<2>(Circle{Vec<2>(0, 0), 1.0}.sample(1000), o);
+  ASSERT_EQ(r.loops.size(), 1u);
+  for (const auto& v : r.surface.vertices) EXPECT_LE(std::abs(v.norm() - 1.0), 0.1);
+}
+
+TEST(LevelSetReconstruction, ResultDoesNotDependOnScale) {
+  const Points<2> unit = star(1500);
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 256;
+  const auto a = reconstruct<2>(unit, o);
+  for (double scale : {1e-6, 1e6}) {
+    Points<2> scaled;
+    for (const auto& p : unit) scaled.push_back(scale * p + Vec<2>(3 * scale, -scale));
+    const auto b = reconstruct<2>(scaled, o);
+    ASSERT_EQ(a.surface.vertices.size(), b.surface.vertices.size()) << scale;
+    EXPECT_EQ(a.iterations, b.iterations);
+    for (std::size_t i = 0; i < a.surface.vertices.size(); ++i) {
+      const Vec<2> back = (b.surface.vertices[i] - Vec<2>(3 * scale, -scale)) / scale;
+      EXPECT_LE((back - a.surface.vertices[i]).norm(), 1e-6);
+    }
+  }
+}
+
+TEST(LevelSetReconstruction, SkipsNonFinitePointsAndToleratesDuplicates) {
+  Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(800);
+  const Points<2> copy = data;
+  data.insert(data.end(), copy.begin(), copy.end());  // every point twice
+  data.push_back(Vec<2>(std::nan(""), 0));
+  data.push_back(Vec<2>(0, std::numeric_limits<double>::infinity()));
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 256;
+  const auto r = reconstruct<2>(data, o);
+  EXPECT_EQ(r.skipped_points, 2u);
+  EXPECT_EQ(r.input_points, data.size());
+  EXPECT_EQ(r.loops.size(), 1u);
+}
+
+TEST(LevelSetReconstruction, RejectsTooFewOrDegeneratePointsWithAHint) {
+  EXPECT_THROW(reconstruct<3>(Points<3>{}), InvalidInput);
+  EXPECT_THROW(reconstruct<3>(Points<3>{Vec<3>(1, 2, 3)}), InvalidInput);
+  EXPECT_THROW(reconstruct<2>(Points<2>{Vec<2>(0, 0), Vec<2>(1, 0)}), InvalidInput);
+  EXPECT_THROW(reconstruct<2>(Points<2>(5, Vec<2>(std::nan(""), 0))), InvalidInput);
+  Points<3> line, plane;
+  for (int i = 0; i < 100; ++i) {
+    line.push_back(Vec<3>(i, 2 * i, 3 * i));
+    plane.push_back(Vec<3>(i % 10, i / 10, 0));
+  }
+  EXPECT_THROW(reconstruct<3>(line), InvalidInput);
+  try {
+    reconstruct<3>(plane);
+    FAIL() << "coplanar points accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("hint"), std::string::npos);
+  }
+}
+
+TEST(LevelSetReconstruction, RejectsAlphaOfTheWrongSignForTheStart) {
+  const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(200);
+  ReconstructionOptions o;
+  o.alpha = -2;
+  EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+  o.alpha = 2;
+  o.initial_front = InitialFront::inside;
+  EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+  o = ReconstructionOptions();
+  o.max_iterations = 0;
+  EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+}
+
+TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {
+  const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(1000);
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 512;
+  int solve_calls = 0;
+  const auto r = reconstruct<2>(data, o, [&](const std::string& stage, double) {
+    return stage != "solve" || ++solve_calls < 4;
+  });
+  EXPECT_EQ(r.status, ReconstructionStatus::cancelled);
+  EXPECT_EQ(r.iterations, 3);
+  EXPECT_EQ(r.loops.size(), 1u);  // the best iterate so far
+  const auto early = reconstruct<2>(data, o, [](const std::string&, double) { return false; });
+  EXPECT_EQ(early.status, ReconstructionStatus::cancelled);
+  EXPECT_TRUE(early.surface.vertices.empty());
+}
+
+TEST(LevelSetReconstruction, IsDeterministic) {
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 32;
+  const Points<3> data = Torus{Vec<3>(0, 0, 0), 1.0, 0.4}.sample(3000);
+  const auto a = reconstruct<3>(data, o);
+  const auto b = reconstruct<3>(data, o);
+  EXPECT_TRUE(a.surface.facets == b.surface.facets);
+  EXPECT_TRUE(a.surface.vertices == b.surface.vertices);
+}
+
+}  // namespace
+}  // namespace lsr
