@@ -142,7 +142,7 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.time_step >= 0.0 && o.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (10 h_min)");
   if (!(o.tolerance >= 0.0 && o.tolerance < 1.0)) bad("tolerance must be in [0, 1)", "use 0 (h_min)");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
-  if (o.renormalization_interval < 1) bad("renormalization_interval must be at least 1", "use 1 or 2");
+  if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
   if (!(o.solver_tolerance > 0.0 && o.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
   if (o.initial_front == InitialFront::enclosing && o.alpha < 0.0) {
@@ -307,6 +307,9 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
       o.curvature_weight >= 0.0 ? o.curvature_weight : automatic_curvature_weight(r.h_min, r.noise);
   step.solver_tolerance = o.solver_tolerance;
   step.solver = o.solver;
+  const int interval = o.renormalization_interval > 0
+                           ? o.renormalization_interval
+                           : std::max(1, int(0.4 / (std::abs(step.alpha) * step.time_step) + 1e-9));
   r.time_step = step.time_step;
   r.alpha = step.alpha;
   r.curvature_weight = step.curvature_weight;
@@ -319,6 +322,7 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   const double front_tolerance = eps + 0.5 * spacing;
   double front_distance = std::numeric_limits<double>::infinity();
   std::vector<char> pinned(at.size(), 0);
+  double first_residual = std::numeric_limits<double>::infinity();
   Eigen::VectorXd best = u;
   double best_residual = std::numeric_limits<double>::infinity();
   // Renormalise every vertex: a band of a few h_min is thinner than the coarse simplices the
@@ -327,13 +331,17 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   const double band = std::numeric_limits<double>::infinity();
   try {
     for (int n = 1; n <= o.max_iterations; ++n) {
-      progress.update("solve", double(n - 1) / o.max_iterations);
+      // The residual falls geometrically: report the fraction of log(first / eps) done.
+      progress.update("solve", first_residual > eps && std::isfinite(first_residual)
+                                   ? std::clamp(std::log(first_residual / best_residual) /
+                                                    std::log(first_residual / eps), 0.0, 1.0)
+                                   : 0.0);
       SolverReport solve;
       u = semi_implicit_step(ops, d, u, step, &solve);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
       if (o.pin_reached_data) pin_reached_data(at, cells, u, step.alpha, 0.5 * eps, pinned, d);
-      if (n % o.renormalization_interval == 0) {
+      if (n % interval == 0) {
         front_distance = max_front_distance(renormalize(mesh, u, ops.gradient_norms(u), band, o.threads).front, distance);
         clock.end("renormalize");
       }
@@ -342,6 +350,7 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
       // front_tolerance of the data; the residual is the worse of the two, in units of eps.
       const double residual = std::max(data_residual, front_distance * eps / front_tolerance);
       r.residual_history.push_back(residual / box.scale());
+      if (!std::isfinite(first_residual)) first_residual = residual;
       r.iterations = n;
       if (residual < best_residual) {
         best_residual = residual;

@@ -17,7 +17,7 @@ namespace {
 // Candidates per vertex: the facets with the k nearest centroids. Facets near a vertex of a
 // conforming front are of similar size, so the closest facet is among them.
 constexpr int kCandidates2D = 8;
-constexpr int kCandidates3D = 16;
+constexpr int kCandidates3D = 8;
 
 double segment_distance(const Vec<2>& p, const Vec<2>& a, const Vec<2>& b) {
   const Vec<2> ab = b - a;
