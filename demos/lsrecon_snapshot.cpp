@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file lsrecon_snapshot.cpp
 /// @brief Renders a .vtu written by lsrecon to a PNG, offscreen (run under xvfb-run):
-///   lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip]
+///   lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip | --top]
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges, which
-/// makes the grading of an adaptive mesh visible.
+/// makes the grading of an adaptive mesh visible; --top looks down the z axis. Flat (2D) data
+/// is always seen from above.
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkDataSetMapper.h>
@@ -18,18 +19,20 @@
 #include <vtkWindowToImageFilter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip]\n");
+    std::fprintf(stderr, "usage: lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip | --top]\n");
     return 2;
   }
   const std::string input = argv[1];
   const std::string output = argv[2];
   const bool clip = argc > 3 && std::string(argv[3]) == "--clip";
+  const bool top = argc > 3 && std::string(argv[3]) == "--top";
   if (!std::ifstream(input)) {
     std::fprintf(stderr, "lsrecon-snapshot: cannot read %s\n", input.c_str());
     return 1;
@@ -66,6 +69,12 @@ int main(int argc, char** argv) {
   mapper->ScalarVisibilityOff();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.85, 0.75, 0.55);
+  const bool flat = b[5] - b[4] <= 1e-12 * std::max(b[1] - b[0], b[3] - b[2]);
+  if (flat) {  // 2D curves: dark, thick lines seen from above
+    actor->GetProperty()->SetColor(0.1, 0.2, 0.6);
+    actor->GetProperty()->SetLineWidth(3.0);
+    actor->GetProperty()->LightingOff();
+  }
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
@@ -75,8 +84,9 @@ int main(int argc, char** argv) {
   window->AddRenderer(renderer);
   window->SetSize(1000, 800);
   renderer->ResetCamera();
-  renderer->GetActiveCamera()->Elevation(clip ? 0 : 30);
-  renderer->GetActiveCamera()->Azimuth(clip ? 0 : 30);
+  const bool oblique = !clip && !flat && !top;
+  renderer->GetActiveCamera()->Elevation(oblique ? 30 : 0);
+  renderer->GetActiveCamera()->Azimuth(oblique ? 30 : 0);
   if (clip) renderer->GetActiveCamera()->SetViewUp(0, 0, 1);
   if (clip) renderer->GetActiveCamera()->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
   renderer->ResetCamera();

@@ -251,11 +251,10 @@ void attach_output(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const
   if constexpr (D == 2) r.loops = closed_loops(r.surface);
 }
 
-}  // namespace
 
 template <int D>
-ReconstructionResult<D> reconstruct(const Points<D>& input, const ReconstructionOptions& o,
-                                    const ProgressCallback& callback) {
+ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
+                                     const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
   ReconstructionResult<D> r;
   StageClock clock(r.seconds);
@@ -315,7 +314,18 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   r.curvature_weight = step.curvature_weight;
   const double eps = o.tolerance > 0.0 ? o.tolerance : r.h_min;
   r.tolerance = eps / box.scale();
-  Eigen::VectorXd u = initial_field(mesh, data, o.initial_front, r.h_min);
+  Eigen::VectorXd u(mesh.vertices.size());
+  if (custom_start) {
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
+    }
+    if (!u.allFinite() || u.minCoeff() >= 0.0 || u.maxCoeff() < 0.0) {
+      throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
+                         "pass a signed distance that is negative inside a closed curve / surface near the data");
+    }
+  } else {
+    u = initial_field(mesh, data, o.initial_front, r.h_min);
+  }
   clock.end("setup");
 
   // Between samples the front may sit half a sample spacing away from the data.
@@ -374,6 +384,30 @@ ReconstructionResult<D> reconstruct(const Points<D>& input, const Reconstruction
   return r;
 }
 
+}  // namespace
+
+template <int D>
+ReconstructionResult<D> reconstruct(const Points<D>& points, const ReconstructionOptions& options,
+                                    const ProgressCallback& progress) {
+  return run_pipeline<D>(points, options, progress, nullptr);
+}
+
+template <int D>
+ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDistance<D>& initial,
+                                         const ReconstructionOptions& options, const ProgressCallback& progress) {
+  if (options.alpha == 0.0) {
+    throw InvalidInput("a custom start needs an explicit alpha",
+                       "set alpha > 0 (e.g. 2) if the start encloses the data, < 0 (e.g. -2) if it lies inside");
+  }
+  ReconstructionOptions o = options;
+  o.initial_front = options.alpha > 0.0 ? InitialFront::enclosing : InitialFront::inside;
+  return run_pipeline<D>(points, o, progress, &initial);
+}
+
+template ReconstructionResult<2> reconstruct_from<2>(const Points<2>&, const SignedDistance<2>&,
+                                                     const ReconstructionOptions&, const ProgressCallback&);
+template ReconstructionResult<3> reconstruct_from<3>(const Points<3>&, const SignedDistance<3>&,
+                                                     const ReconstructionOptions&, const ProgressCallback&);
 template ReconstructionResult<2> reconstruct<2>(const Points<2>&, const ReconstructionOptions&, const ProgressCallback&);
 template ReconstructionResult<3> reconstruct<3>(const Points<3>&, const ReconstructionOptions&, const ProgressCallback&);
 

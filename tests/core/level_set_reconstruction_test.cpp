@@ -90,6 +90,30 @@ TEST(LevelSetReconstruction, InsideStartFindsTheSameCurveAsTheEnclosingStart) {
   EXPECT_LE(max_distance(inside.surface.vertices, other), 3 * inside.tolerance);
 }
 
+TEST(LevelSetReconstruction, CustomStartingCurvesWork) {
+  // An off-centre ellipse enclosing the data, and a small circle inside it.
+  const Points<2> data = star(3000);
+  ReconstructionOptions o;
+  o.h_min = 1.0 / 512;
+  const auto reference = reconstruct<2>(data, o);
+  o.alpha = 2;
+  const auto outer = reconstruct_from<2>(
+      data, [](const Vec<2>& p) { return std::hypot((p.x() - 0.1) / 1.5, p.y() / 1.4) - 1.0; }, o);
+  o.alpha = -2;
+  const auto inner = reconstruct_from<2>(data, [](const Vec<2>& p) { return p.norm() - 0.3; }, o);
+  const NearestPointIndex<2> ref(reference.surface.vertices);
+  for (const auto* r : {&outer, &inner}) {
+    EXPECT_EQ(r->status, ReconstructionStatus::converged);
+    ASSERT_EQ(r->loops.size(), 1u);
+    // Both lie within 2 h_min of the data; so within 4 h_min of each other, plus vertex spacing.
+    EXPECT_LE(max_distance(r->surface.vertices, ref), 4 * r->tolerance + std::sqrt(2.0) * r->tolerance);
+  }
+  o.alpha = 0;
+  EXPECT_THROW(reconstruct_from<2>(data, [](const Vec<2>& p) { return p.norm() - 0.3; }, o), InvalidInput);
+  o.alpha = 2;
+  EXPECT_THROW(reconstruct_from<2>(data, [](const Vec<2>&) { return 1.0; }, o), InvalidInput);
+}
+
 TEST(LevelSetReconstruction, ThreeSeparateShapesGiveThreeCurvesFromOneEnclosingStart) {
   Points<2> data = Circle{Vec<2>(-1.2, 0), 0.5}.sample(1500);
   for (const auto& p : Circle{Vec<2>(0.6, 0.8), 0.5}.sample(1500)) data.push_back(p);

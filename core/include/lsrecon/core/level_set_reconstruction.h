@@ -14,6 +14,7 @@
 #include "lsrecon/core/progress.h"
 #include "lsrecon/core/semi_implicit_step.h"
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -95,5 +96,21 @@ struct ReconstructionResult {
 template <int D>
 ReconstructionResult<D> reconstruct(const Points<D>& points, const ReconstructionOptions& options = {},
                                     const ProgressCallback& progress = {});
+
+/// @brief A signed distance (or any function negative inside, positive outside, with a regular
+/// zero set) in the input's coordinates.
+template <int D>
+using SignedDistance = std::function<double(const Vec<D>&)>;
+
+/// @brief reconstruct() starting from the zero set of initial (input coordinates) instead of
+/// a circle / sphere. options.alpha must be given: > 0 when that zero set encloses the data,
+/// < 0 when it lies inside the shape; options.initial_front is ignored. A start that is partly
+/// inside and partly outside the data is not supported (an unsigned d cannot attract from both
+/// sides; see DESIGN.md section 9).
+/// @throw InvalidInput as reconstruct(), or if alpha is 0 or initial has no zero set in the box.
+template <int D>
+ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDistance<D>& initial,
+                                         const ReconstructionOptions& options,
+                                         const ProgressCallback& progress = {});
 
 }  // namespace lsr
