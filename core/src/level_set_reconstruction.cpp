@@ -205,8 +205,7 @@ void pin_reached_data(const std::vector<Location<D>>& at, const VertexCells& cel
                       std::vector<char>& pinned, Eigen::VectorXd& d) {
   for (std::size_t i = 0; i < at.size(); ++i) {
     if (pinned[i]) continue;
-    double v = 0.0;
-    for (int k = 0; k <= D; ++k) v += at[i].weights[k] * u[at[i].vertices[k]];
+    const double v = interpolate(at[i], u);
     if ((alpha > 0.0 ? v : -v) >= -reach) {
       pinned[i] = 1;
       for (Index vertex : at[i].vertices) d[vertex] = 0.0;
@@ -218,11 +217,7 @@ void pin_reached_data(const std::vector<Location<D>>& at, const VertexCells& cel
 template <int D>
 double max_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd& u) {
   double worst = 0.0;
-  for (const auto& loc : at) {
-    double v = 0.0;
-    for (int k = 0; k <= D; ++k) v += loc.weights[k] * u[loc.vertices[k]];
-    worst = std::max(worst, std::abs(v));
-  }
+  for (const auto& loc : at) worst = std::max(worst, std::abs(interpolate(loc, u)));
   return worst;
 }
 

@@ -3,10 +3,10 @@
 /// @brief The whole pipeline of the paper (figure 2) as one call: unoriented points in, closed
 /// curves (2D) or a closed oriented surface with normals (3D) out, in the input's coordinates.
 ///
-/// The front evolves by du/dt = |grad u| (beta kappa(u) + alpha d(x)). The curvature weight
-/// beta is the paper's 1 by default scaled as DESIGN.md section 9 measured: with beta = 1 the
-/// flow bridges concavities (they stall |kappa| / alpha outside the data); beta = 0.3 h_min^2
-/// keeps that stall below 0.15 h_min for features down to h_min and lets dt = 10 h_min work.
+/// The front evolves by du/dt = |grad u| (beta kappa(u) + alpha d(x)). The paper's curvature
+/// weight beta = 1 bridges concavities: they stall beta |kappa| / alpha outside the data
+/// (DESIGN.md section 9). The default beta = 0.3 h_min^2 keeps that stall below 0.15 h_min for
+/// features down to h_min; README.md lists the other measured departures from the paper.
 #pragma once
 
 #include "lsrecon/core/adaptive_refinement.h"

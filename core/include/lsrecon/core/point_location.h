@@ -30,9 +30,10 @@ template <int D>
 std::vector<Location<D>> locate_all(const AdaptiveMesh<D>& mesh, const Points<D>& points,
                                     int threads = 0);
 
-/// @brief The P1 interpolant of the nodal field u at a located point.
-template <int D>
-double interpolate(const Location<D>& at, const std::vector<double>& u) {
+/// @brief The P1 interpolant of the nodal field u (std::vector or Eigen vector) at a located
+/// point.
+template <int D, class Field>
+double interpolate(const Location<D>& at, const Field& u) {
   double value = 0.0;
   for (int k = 0; k <= D; ++k) value += at.weights[k] * u[at.vertices[k]];
   return value;
