@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_reconstruction.hpp
+/// @brief Template body of pcl::LevelSetReconstruction (included by the explicit instantiations,
+/// or by the header under PCL_NO_PRECOMPILE for other point types).
+#pragma once
+
+#include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/adapters/pcl_points.h"
+#include "lsrecon/pcl/level_set_reconstruction.h"
+
+#include <pcl/common/io.h>
+#include <pcl/console/print.h>
+#include <pcl/point_types.h>
+#include <pcl/surface/impl/reconstruction.hpp>
+
+#include <cmath>
+
+namespace pcl {
+
+template <typename PointInT>
+void LevelSetReconstruction<PointInT>::reconstruct(pcl::PolygonMesh& output) {
+  if (!this->input_) {  // the base class would dereference the missing cloud
+    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
+              getClassName().c_str());
+    output = pcl::PolygonMesh();
+    status_ = Status();
+    return;
+  }
+  SurfaceReconstruction<PointInT>::reconstruct(output);
+}
+
+template <typename PointInT>
+void LevelSetReconstruction<PointInT>::reconstruct(pcl::PointCloud<PointInT>& points,
+                                                   std::vector<pcl::Vertices>& polygons) {
+  if (!this->input_) {
+    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
+              getClassName().c_str());
+    points.clear();
+    polygons.clear();
+    status_ = Status();
+    return;
+  }
+  SurfaceReconstruction<PointInT>::reconstruct(points, polygons);
+}
+
+template <typename PointInT>
+bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& vertices,
+                                           std::vector<pcl::Vertices>& polygons) {
+  status_ = Status();
+  vertices.clear();
+  polygons.clear();
+  try {
+    const lsr::adapters::ConvertedPoints in = lsr::adapters::points_from_cloud(*this->input_, this->indices_.get());
+    status_.skipped_points = in.skipped_non_finite + in.skipped_bad_index;
+    if (in.points.empty()) {
+      throw lsr::InvalidInput("the cloud has no finite point", "check the input cloud and its indices");
+    }
+    double z_min = in.points[0].z(), z_max = z_min;
+    for (const auto& p : in.points) {
+      z_min = std::min(z_min, p.z());
+      z_max = std::max(z_max, p.z());
+    }
+    status_.dimension = dimension_ != 0 ? dimension_ : (z_max == z_min ? 2 : 3);
+    if (status_.dimension != 2 && status_.dimension != 3) {
+      throw lsr::InvalidInput("dimension " + std::to_string(dimension_) + " is not 0, 2 or 3",
+                              "use setDimension(0) (automatic), 2 or 3");
+    }
+    auto record = [&](const auto& r) {
+      status_.ok = true;
+      status_.converged = r.status == lsr::ReconstructionStatus::converged;
+      status_.cancelled = r.status == lsr::ReconstructionStatus::cancelled;
+      status_.iterations = r.iterations;
+      status_.residual = r.residual;
+      status_.tolerance = r.tolerance;
+    };
+    if (status_.dimension == 2) {
+      lsr::Points<2> planar;
+      planar.reserve(in.points.size());
+      for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
+      const auto r = lsr::reconstruct<2>(planar, options_, progress_);
+      vertices = lsr::adapters::normal_cloud<2>(r.surface.vertices, r.normals, 0.5 * (z_min + z_max));
+      polygons = lsr::adapters::polygons_from_loops(r.loops);
+      record(r);
+    } else {
+      const auto r = lsr::reconstruct<3>(in.points, options_, progress_);
+      vertices = lsr::adapters::normal_cloud<3>(r.surface.vertices, r.normals);
+      polygons = lsr::adapters::polygons_from_triangles(r.surface.facets);
+      record(r);
+    }
+    return true;
+  } catch (const std::exception& e) {
+    PCL_ERROR("[pcl::%s::performReconstruction] %s\n", getClassName().c_str(), e.what());
+    vertices.clear();
+    polygons.clear();
+    return false;
+  }
+}
+
+template <typename PointInT>
+void LevelSetReconstruction<PointInT>::performReconstruction(pcl::PolygonMesh& output) {
+  pcl::PointCloud<pcl::PointNormal> vertices;
+  run(vertices, output.polygons);
+  pcl::toPCLPointCloud2(vertices, output.cloud);
+}
+
+template <typename PointInT>
+void LevelSetReconstruction<PointInT>::performReconstruction(pcl::PointCloud<PointInT>& points,
+                                                             std::vector<pcl::Vertices>& polygons) {
+  pcl::PointCloud<pcl::PointNormal> vertices;
+  run(vertices, polygons);
+  points.clear();
+  points.resize(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    points[i].x = vertices[i].x;
+    points[i].y = vertices[i].y;
+    points[i].z = vertices[i].z;
+    if constexpr (pcl::traits::has_normal_v<PointInT>) {
+      points[i].normal_x = vertices[i].normal_x;
+      points[i].normal_y = vertices[i].normal_y;
+      points[i].normal_z = vertices[i].normal_z;
+    }
+  }
+  points.width = std::uint32_t(points.size());
+  points.height = 1;
+  points.is_dense = true;
+}
+
+}  // namespace pcl
+
+#define PCL_INSTANTIATE_LevelSetReconstruction(T) template class pcl::LevelSetReconstruction<T>;

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_reconstruction.h
+/// @brief pcl::LevelSetReconstruction: closed surfaces (3D) or closed curves (2D) from
+/// unoriented points, used like pcl::Poisson.
+///
+/// @code
+///   pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+///   ls.setInputCloud(cloud);
+///   pcl::PolygonMesh mesh;
+///   ls.reconstruct(mesh);   // watertight, oriented; mesh.cloud carries normals
+/// @endcode
+#pragma once
+
+#include "lsrecon/core/level_set_reconstruction.h"
+
+#include <pcl/PolygonMesh.h>
+#include <pcl/point_cloud.h>
+#include <pcl/surface/reconstruction.h>
+
+#include <string>
+#include <vector>
+
+namespace pcl {
+
+/// @brief Level-set reconstruction (Claisse & Frey 2011) as a pcl::SurfaceReconstruction.
+///
+/// Needs no normals: a front evolves from a sphere around the data onto it. Lengths passed to
+/// setters are relative to the unit box the cloud is mapped into (its bounding ball becomes a
+/// ball of radius 0.4); the output is in the cloud's coordinates. Points with NaN or infinite
+/// coordinates are skipped. On bad input the class logs PCL_ERROR and leaves the output empty.
+/// @note setSearchMethod() is accepted for compatibility and not used: distances come from an
+/// exact FLANN index of lsrecon's own.
+template <typename PointInT>
+class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
+ public:
+  using Ptr = shared_ptr<LevelSetReconstruction<PointInT>>;
+  using ConstPtr = shared_ptr<const LevelSetReconstruction<PointInT>>;
+
+  /// @brief Outcome of the last reconstruct().
+  struct Status {
+    bool ok = false;         ///< false when the input was rejected (see the PCL_ERROR log)
+    bool converged = false;  ///< the stopping test was met
+    bool cancelled = false;  ///< the progress callback asked to stop
+    int iterations = 0;      ///< time steps taken
+    double residual = 0.0;   ///< max distance data -> surface at the end, cloud units
+    double tolerance = 0.0;  ///< the stopping tolerance, cloud units
+    int dimension = 0;       ///< 2 or 3, as used
+    std::size_t skipped_points = 0;  ///< NaN / infinite points left out
+  };
+
+  LevelSetReconstruction() { this->check_tree_ = false; }
+
+  /// @brief Resolution 1/h_min in the unit box; 0 (default) chooses it from the data spacing
+  /// and noise. Typical: 64 to 512 in 3D.
+  void setResolution(double resolution) { options_.h_min = resolution > 0 ? 1.0 / resolution : 0.0; }
+  double getResolution() const { return options_.h_min > 0 ? 1.0 / options_.h_min : 0.0; }
+  /// @brief Coarsest mesh size in the unit box (default 1/8).
+  void setMaximumSize(double h_max) { options_.h_max = h_max; }
+  double getMaximumSize() const { return options_.h_max; }
+  /// @brief Grading c of the adaptive mesh (default 2; smaller widens the fine band).
+  void setGrading(double c) { options_.grading = c; }
+  double getGrading() const { return options_.grading; }
+  /// @brief Attraction weight alpha (default 0: +2 from outside, -2 from inside).
+  void setAlpha(double alpha) { options_.alpha = alpha; }
+  double getAlpha() const { return options_.alpha; }
+  /// @brief Curvature (smoothness) weight beta, unit box length^2 (default -1: automatic,
+  /// 0.3 h_min^2 on clean data, more with noise).
+  void setCurvatureWeight(double beta) { options_.curvature_weight = beta; }
+  double getCurvatureWeight() const { return options_.curvature_weight; }
+  /// @brief Time step in unit-box time (default 0: 0.2 / |alpha|).
+  void setTimeStep(double dt) { options_.time_step = dt; }
+  double getTimeStep() const { return options_.time_step; }
+  /// @brief Time steps at most (default 1000).
+  void setMaxIterations(int n) { options_.max_iterations = n; }
+  int getMaxIterations() const { return options_.max_iterations; }
+  /// @brief Stopping tolerance in the unit box (default 0: h_min).
+  void setTolerance(double eps) { options_.tolerance = eps; }
+  double getTolerance() const { return options_.tolerance; }
+  /// @brief Renormalise every k steps (default 0: automatic, 2 at the default time step).
+  void setRenormalizationInterval(int k) { options_.renormalization_interval = k; }
+  int getRenormalizationInterval() const { return options_.renormalization_interval; }
+  /// @brief Start from a sphere around the data (default) or inside it.
+  void setInitialSurface(lsr::InitialFront start) { options_.initial_front = start; }
+  lsr::InitialFront getInitialSurface() const { return options_.initial_front; }
+  /// @brief 2 for curves in the plane z = const, 3 for surfaces, 0 (default): 2 when every
+  /// point has the same z, else 3.
+  void setDimension(int dimension) { dimension_ = dimension; }
+  int getDimension() const { return dimension_; }
+  /// @brief Refuse meshes predicted to need more vertices (default 20 million).
+  void setMaxMeshVertices(int n) { options_.max_vertices = n; }
+  int getMaxMeshVertices() const { return options_.max_vertices; }
+  /// @brief Threads for the distance queries (default 0: all cores).
+  void setThreads(int n) { options_.threads = n; }
+  int getThreads() const { return options_.threads; }
+  /// @brief Called with (stage, fraction in [0, 1]); return false to cancel.
+  void setProgressCallback(lsr::ProgressCallback callback) { progress_ = std::move(callback); }
+
+  /// @brief All solver options at once.
+  void setOptions(const lsr::ReconstructionOptions& options) { options_ = options; }
+  const lsr::ReconstructionOptions& getOptions() const { return options_; }
+  const Status& getStatus() const { return status_; }
+
+  /// @brief As SurfaceReconstruction::reconstruct, but safe without an input cloud.
+  void reconstruct(pcl::PolygonMesh& output) override;
+  /// @brief Output vertices as PointInT (normals filled when PointInT has them).
+  void reconstruct(pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons);
+
+ protected:
+  std::string getClassName() const override { return "LevelSetReconstruction"; }
+  void performReconstruction(pcl::PolygonMesh& output) override;
+  void performReconstruction(pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons) override;
+
+ private:
+  /// The core result as a PointNormal cloud and polygons; false (logged) on bad input.
+  bool run(pcl::PointCloud<pcl::PointNormal>& vertices, std::vector<pcl::Vertices>& polygons);
+
+  lsr::ReconstructionOptions options_;
+  lsr::ProgressCallback progress_;
+  int dimension_ = 0;
+  Status status_;
+};
+
+}  // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include "lsrecon/pcl/impl/level_set_reconstruction.hpp"
+#endif

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file level_set_reconstruction_test.cpp
+/// @brief pcl::LevelSetReconstruction used exactly like pcl::Poisson.
+#include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/surface_topology.h"
+#include "lsrecon/pcl/level_set_reconstruction.h"
+
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr torus_cloud(int n) {
+  typename pcl::PointCloud<PointT>::Ptr cloud(new pcl::PointCloud<PointT>);
+  for (const auto& p : lsr::Torus{lsr::Vec<3>(0, 0, 0), 1.0, 0.4}.sample(n)) {
+    PointT q;
+    q.x = float(p.x());
+    q.y = float(p.y());
+    q.z = float(p.z());
+    cloud->push_back(q);
+  }
+  PointT bad;
+  bad.x = bad.y = bad.z = std::numeric_limits<float>::quiet_NaN();
+  cloud->push_back(bad);  // PCL clouds carry NaNs: skipped
+  return cloud;
+}
+
+template <typename PointT>
+void check_torus() {
+  pcl::LevelSetReconstruction<PointT> ls;
+  ls.setInputCloud(torus_cloud<PointT>(8000));
+  ls.setResolution(48);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok);
+  EXPECT_TRUE(ls.getStatus().converged);
+  EXPECT_EQ(ls.getStatus().skipped_points, 1u);
+  EXPECT_EQ(ls.getStatus().dimension, 3);
+  lsr::Points<3> vertices;
+  std::vector<std::array<lsr::Index, 3>> triangles;
+  lsr::adapters::triangles_from_polygon_mesh(mesh, vertices, triangles);
+  ASSERT_EQ(triangles.size(), mesh.polygons.size());
+  const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
+  EXPECT_TRUE(t.watertight && t.oriented && t.edge_manifold && t.vertex_manifold);
+  EXPECT_EQ(t.components, 1);
+  EXPECT_EQ(t.genus, std::vector<int>{1});
+  // Shared vertices with normals, not a triangle soup.
+  EXPECT_LT(vertices.size(), 3 * triangles.size() / 2 + 1);
+  pcl::PointCloud<pcl::PointNormal> normals;
+  pcl::fromPCLPointCloud2(mesh.cloud, normals);
+  for (const auto& p : normals) EXPECT_NEAR(std::hypot(p.normal_x, p.normal_y, p.normal_z), 1.0, 1e-5);
+}
+
+TEST(PclLevelSetReconstruction, TorusFromPointXYZIsWatertightGenusOneWithNormals) { check_torus<pcl::PointXYZ>(); }
+
+TEST(PclLevelSetReconstruction, PointNormalWorksAndReceivesNormals) {
+  check_torus<pcl::PointNormal>();
+  pcl::LevelSetReconstruction<pcl::PointNormal> ls;
+  ls.setInputCloud(torus_cloud<pcl::PointNormal>(4000));
+  ls.setResolution(32);
+  pcl::PointCloud<pcl::PointNormal> points;
+  std::vector<pcl::Vertices> polygons;
+  ls.reconstruct(points, polygons);
+  ASSERT_FALSE(polygons.empty());
+  // Normals point outwards: away from the torus's core circle.
+  int outward = 0;
+  for (const auto& p : points) {
+    const lsr::Vec<3> x(p.x, p.y, p.z);
+    const lsr::Vec<3> core = lsr::Vec<3>(x.x(), x.y(), 0).normalized();
+    outward += (x - core).dot(lsr::Vec<3>(p.normal_x, p.normal_y, p.normal_z)) > 0 ? 1 : 0;
+  }
+  EXPECT_GE(outward, int(0.99 * points.size()));
+}
+
+TEST(PclLevelSetReconstruction, PlanarCloudGivesClosedLoopsInOrder) {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& c : {lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}, lsr::Circle{lsr::Vec<2>(1.2, 0), 0.5}}) {
+    for (const auto& p : c.sample(800)) cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), 2.5f));
+  }
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(cloud);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  EXPECT_EQ(ls.getStatus().dimension, 2);
+  ASSERT_EQ(mesh.polygons.size(), 2u);
+  pcl::PointCloud<pcl::PointXYZ> vertices;
+  pcl::fromPCLPointCloud2(mesh.cloud, vertices);
+  for (const auto& loop : mesh.polygons) {
+    // Consecutive vertices of a loop are neighbours on the curve.
+    for (std::size_t i = 0; i < loop.vertices.size(); ++i) {
+      const auto& a = vertices[loop.vertices[i]];
+      const auto& b = vertices[loop.vertices[(i + 1) % loop.vertices.size()]];
+      EXPECT_LT(std::hypot(a.x - b.x, a.y - b.y), 0.05);
+      EXPECT_FLOAT_EQ(a.z, 2.5f);
+    }
+  }
+}
+
+TEST(PclLevelSetReconstruction, MissingOrBadInputLeavesTheOutputEmpty) {
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  pcl::PolygonMesh mesh;
+  mesh.polygons.resize(3);
+  ls.reconstruct(mesh);  // no input cloud: no crash
+  EXPECT_TRUE(mesh.polygons.empty());
+  EXPECT_FALSE(ls.getStatus().ok);
+
+  pcl::PointCloud<pcl::PointXYZ>::Ptr line(new pcl::PointCloud<pcl::PointXYZ>);
+  for (int i = 0; i < 50; ++i) line->push_back(pcl::PointXYZ(float(i), float(2 * i), float(3 * i)));
+  ls.setInputCloud(line);
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(mesh.polygons.empty());
+  EXPECT_FALSE(ls.getStatus().ok);
+  pcl::PointCloud<pcl::PointXYZ> points;
+  std::vector<pcl::Vertices> polygons(2);
+  ls.reconstruct(points, polygons);
+  EXPECT_TRUE(polygons.empty());
+  EXPECT_TRUE(points.empty());
+}
+
+TEST(PclLevelSetReconstruction, HonoursIndicesAndSetters) {
+  auto cloud = torus_cloud<pcl::PointXYZ>(4000);
+  pcl::IndicesPtr half(new pcl::Indices);
+  for (int i = 0; i < int(cloud->size()); i += 2) half->push_back(i);
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(cloud);
+  ls.setIndices(half);
+  ls.setResolution(32);
+  ls.setMaxIterations(3);
+  EXPECT_DOUBLE_EQ(ls.getResolution(), 32.0);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(ls.getStatus().ok);
+  EXPECT_EQ(ls.getStatus().iterations, 3);
+  EXPECT_FALSE(ls.getStatus().converged);
+}
+
+}  // namespace
