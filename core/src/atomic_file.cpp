@@ -10,7 +10,12 @@ namespace lsr {
 
 void write_file_atomically(const std::string& path,
                            const std::function<void(const std::string&)>& write) {
-  const std::string temporary = path + ".partial";
+  // Keep the extension: writers pick the format from it (out.ply -> out.partial.ply).
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  const bool has_extension = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  const std::string temporary =
+      has_extension ? path.substr(0, dot) + ".partial" + path.substr(dot) : path + ".partial";
   try {
     write(temporary);
   } catch (...) {

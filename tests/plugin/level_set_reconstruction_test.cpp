@@ -78,6 +78,20 @@ TEST(PclLevelSetReconstruction, PointNormalWorksAndReceivesNormals) {
   EXPECT_GE(outward, int(0.99 * points.size()));
 }
 
+TEST(PclLevelSetReconstruction, OpenMeshOutputIsAClosedMeshWithNormals) {
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  lsr::adapters::TriMesh mesh;
+  EXPECT_FALSE(ls.reconstruct(mesh));  // no input: logged, no crash
+  ls.setInputCloud(torus_cloud<pcl::PointXYZ>(4000));
+  ls.setResolution(32);
+  ASSERT_TRUE(ls.reconstruct(mesh));
+  const lsr::LevelSetMesh<3> back = lsr::adapters::from_openmesh(mesh);
+  const lsr::SurfaceTopology t = lsr::analyze_surface(back.vertices, back.facets);
+  EXPECT_TRUE(t.watertight && t.oriented);
+  EXPECT_EQ(t.genus, std::vector<int>{1});
+  EXPECT_TRUE(mesh.has_vertex_normals());
+}
+
 TEST(PclLevelSetReconstruction, PlanarCloudGivesClosedLoopsInOrder) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& c : {lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}, lsr::Circle{lsr::Vec<2>(1.2, 0), 0.5}}) {

@@ -9,7 +9,8 @@
 
 namespace lsr {
 
-/// @brief Calls write(temporary_path), then renames the temporary onto path. If write throws
+/// @brief Calls write(temporary_path) (path with ".partial" before its extension, so that
+/// format detection by extension still works), then renames the temporary onto path. If write throws
 /// or the rename fails, the temporary is removed, path is left as it was, and lsr::Error is
 /// thrown (write's own exception is rethrown as is).
 void write_file_atomically(const std::string& path,

@@ -11,6 +11,7 @@
 /// @endcode
 #pragma once
 
+#include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include <pcl/PolygonMesh.h>
@@ -104,6 +105,9 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   void reconstruct(pcl::PolygonMesh& output) override;
   /// @brief Output vertices as PointInT (normals filled when PointInT has them).
   void reconstruct(pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons);
+  /// @brief The surface as an OpenMesh triangle mesh with vertex normals (3D only).
+  /// @return false (logged with PCL_ERROR, mesh left empty) on bad input or 2D data.
+  bool reconstruct(lsr::adapters::TriMesh& mesh);
 
  protected:
   std::string getClassName() const override { return "LevelSetReconstruction"; }

@@ -44,6 +44,39 @@ void LevelSetReconstruction<PointInT>::reconstruct(pcl::PointCloud<PointInT>& po
 }
 
 template <typename PointInT>
+bool LevelSetReconstruction<PointInT>::reconstruct(lsr::adapters::TriMesh& mesh) {
+  mesh.clear();
+  status_ = Status();
+  if (!this->input_) {
+    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
+              getClassName().c_str());
+    return false;
+  }
+  if (!this->initCompute()) return false;
+  pcl::PointCloud<pcl::PointNormal> vertices;
+  std::vector<pcl::Vertices> polygons;
+  const bool ok = run(vertices, polygons);
+  this->deinitCompute();
+  if (!ok) return false;
+  if (status_.dimension != 3) {
+    PCL_ERROR("[pcl::%s::reconstruct] the cloud is planar: closed curves are not a triangle mesh "
+              "[hint: use reconstruct(pcl::PolygonMesh&) for 2D data]\n", getClassName().c_str());
+    return false;
+  }
+  mesh.request_vertex_normals();
+  std::vector<lsr::adapters::TriMesh::VertexHandle> handles;
+  handles.reserve(vertices.size());
+  for (const auto& p : vertices) {
+    handles.push_back(mesh.add_vertex(lsr::adapters::TriMesh::Point(p.x, p.y, p.z)));
+    mesh.set_normal(handles.back(), lsr::adapters::TriMesh::Normal(p.normal_x, p.normal_y, p.normal_z));
+  }
+  for (const auto& t : polygons) {
+    mesh.add_face(handles[t.vertices[0]], handles[t.vertices[1]], handles[t.vertices[2]]);
+  }
+  return true;
+}
+
+template <typename PointInT>
 bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& vertices,
                                            std::vector<pcl::Vertices>& polygons) {
   status_ = Status();

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file openmesh_mesh.h
+/// @brief Core surfaces <-> OpenMesh triangle meshes, OpenMesh file IO (PLY, OBJ, OFF, STL)
+/// written atomically, and quadric decimation.
+#pragma once
+
+// OpenMesh wants its IO header first.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include "lsrecon/core/level_set_extraction.h"
+
+#include <string>
+
+namespace lsr::adapters {
+
+/// @brief OpenMesh's default triangle mesh (float points, vertex normals requested).
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+/// @brief The surface with its per-vertex normals; face orientation is kept.
+TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals);
+
+/// @brief Vertices and triangles of an OpenMesh mesh.
+LevelSetMesh<3> from_openmesh(const TriMesh& mesh);
+
+/// @brief Writes PLY (binary), OBJ, OFF or STL by the file's extension, with vertex normals
+/// where the format holds them, atomically (an existing file survives a failure).
+/// @throw lsr::Error naming the path and the supported extensions.
+void write_mesh_file(const TriMesh& mesh, const std::string& path);
+
+/// @brief Quadric-error decimation to at most target_faces faces, never flipping normals;
+/// returns the face count reached. Vertex normals are recomputed.
+std::size_t decimate(TriMesh& mesh, std::size_t target_faces);
+
+/// @brief The vertex positions of a mesh file (OBJ, OFF, PLY, STL) read by OpenMesh.
+/// @throw lsr::Error if the file cannot be read.
+Points<3> read_mesh_vertices(const std::string& path);
+
+}  // namespace lsr::adapters

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file openmesh_mesh.cpp
+#include "lsrecon/adapters/openmesh_mesh.h"
+
+#include "lsrecon/core/atomic_file.h"
+#include "lsrecon/core/errors.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+
+#include <algorithm>
+#include <cctype>
+
+namespace lsr::adapters {
+
+TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals) {
+  TriMesh mesh;
+  mesh.request_vertex_normals();
+  std::vector<TriMesh::VertexHandle> handles;
+  handles.reserve(surface.vertices.size());
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
+    const Vec<3>& p = surface.vertices[i];
+    handles.push_back(mesh.add_vertex(TriMesh::Point(float(p.x()), float(p.y()), float(p.z()))));
+    if (i < normals.size()) {
+      mesh.set_normal(handles.back(), TriMesh::Normal(float(normals[i].x()), float(normals[i].y()), float(normals[i].z())));
+    }
+  }
+  for (const auto& f : surface.facets) mesh.add_face(handles[f[0]], handles[f[1]], handles[f[2]]);
+  return mesh;
+}
+
+LevelSetMesh<3> from_openmesh(const TriMesh& mesh) {
+  LevelSetMesh<3> out;
+  for (const auto& v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    out.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  for (const auto& f : mesh.faces()) {
+    std::array<Index, 3> tri{};
+    int k = 0;
+    for (const auto& v : mesh.fv_range(f)) tri[k++] = Index(v.idx());
+    out.facets.push_back(tri);
+  }
+  return out;
+}
+
+void write_mesh_file(const TriMesh& mesh, const std::string& path) {
+  std::string ext = path.substr(std::min(path.size(), path.find_last_of('.') + 1));
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != "ply" && ext != "obj" && ext != "off" && ext != "stl") {
+    throw Error("cannot write a mesh to '" + path + "'", "use an output ending in .ply, .obj, .off or .stl");
+  }
+  OpenMesh::IO::Options options;
+  if (ext == "ply" || ext == "stl") options += OpenMesh::IO::Options::Binary;
+  if (ext != "stl" && mesh.has_vertex_normals()) options += OpenMesh::IO::Options::VertexNormal;
+  write_file_atomically(path, [&](const std::string& temporary) {
+    if (!OpenMesh::IO::write_mesh(mesh, temporary, options, 9)) {
+      throw Error("writing " + path + " failed", "check that the folder exists, is writable and has space");
+    }
+  });
+}
+
+std::size_t decimate(TriMesh& mesh, std::size_t target_faces) {
+  using Decimater = OpenMesh::Decimater::DecimaterT<TriMesh>;
+  using Quadric = OpenMesh::Decimater::ModQuadricT<TriMesh>::Handle;
+  using NoFlip = OpenMesh::Decimater::ModNormalFlippingT<TriMesh>::Handle;
+  if (!mesh.has_face_normals()) mesh.request_face_normals();
+  mesh.update_face_normals();
+  Decimater decimater(mesh);
+  Quadric quadric;
+  NoFlip no_flip;
+  decimater.add(quadric);
+  decimater.add(no_flip);
+  decimater.initialize();
+  decimater.decimate_to_faces(0, target_faces);
+  mesh.garbage_collection();
+  if (mesh.has_vertex_normals()) mesh.update_vertex_normals();
+  return mesh.n_faces();
+}
+
+Points<3> read_mesh_vertices(const std::string& path) {
+  OpenMesh::PolyMesh_ArrayKernelT<> mesh;
+  if (!OpenMesh::IO::read_mesh(mesh, path)) {
+    throw Error("cannot read the mesh file " + path, "check that it exists and is a valid OBJ, OFF, PLY or STL file");
+  }
+  Points<3> points;
+  points.reserve(mesh.n_vertices());
+  for (const auto& v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    points.emplace_back(p[0], p[1], p[2]);
+  }
+  return points;
+}
+
+}  // namespace lsr::adapters

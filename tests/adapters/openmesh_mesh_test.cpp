@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file openmesh_mesh_test.cpp
+#include "lsrecon/adapters/openmesh_mesh.h"
+#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/core/surface_topology.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace lsr::adapters {
+namespace {
+
+namespace fs = std::filesystem;
+
+const ReconstructionResult<3>& sphere() {
+  static const ReconstructionResult<3> r = [] {
+    ReconstructionOptions o;
+    o.h_min = 1.0 / 32;
+    return reconstruct<3>(Sphere{Vec<3>(0, 0, 0), 1.0}.sample(4000), o);
+  }();
+  return r;
+}
+
+struct TempDir {
+  TempDir() : path(fs::temp_directory_path() / ("lsrecon_om_" + std::to_string(::getpid()))) { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path path;
+};
+
+TEST(OpenMeshAdapter, RoundTripKeepsTopologyAndNormals) {
+  const TriMesh mesh = to_openmesh(sphere().surface, sphere().normals);
+  EXPECT_EQ(mesh.n_vertices(), sphere().surface.vertices.size());
+  EXPECT_EQ(mesh.n_faces(), sphere().surface.facets.size());
+  const LevelSetMesh<3> back = from_openmesh(mesh);
+  const SurfaceTopology t = analyze_surface(back.vertices, back.facets);
+  EXPECT_TRUE(t.watertight && t.oriented);
+  EXPECT_GT(t.signed_volume, 0.0);
+  const auto n = mesh.normal(*mesh.vertices_begin());
+  EXPECT_NEAR(n.norm(), 1.0, 1e-5);
+}
+
+TEST(OpenMeshAdapter, WritesEveryFormatAndReadsItBack) {
+  TempDir dir;
+  const TriMesh mesh = to_openmesh(sphere().surface, sphere().normals);
+  for (const char* ext : {"ply", "obj", "off", "stl"}) {
+    const std::string file = (dir.path / (std::string("sphere.") + ext)).string();
+    write_mesh_file(mesh, file);
+    const Points<3> vertices = read_mesh_vertices(file);
+    // STL stores triangle corners; the reader welds them back to the shared vertices.
+    EXPECT_EQ(vertices.size(), mesh.n_vertices()) << ext;
+  }
+  EXPECT_THROW(write_mesh_file(mesh, (dir.path / "sphere.xyz").string()), Error);
+  EXPECT_THROW(write_mesh_file(mesh, (dir.path / "missing" / "a.ply").string()), Error);
+  EXPECT_THROW(read_mesh_vertices((dir.path / "none.obj").string()), Error);
+  for (const auto& entry : fs::directory_iterator(dir.path)) {
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+  }
+}
+
+TEST(OpenMeshAdapter, DecimationReachesTheTargetAndStaysClosed) {
+  TriMesh mesh = to_openmesh(sphere().surface, sphere().normals);
+  const std::size_t target = mesh.n_faces() / 4;
+  EXPECT_LE(decimate(mesh, target), target);
+  const LevelSetMesh<3> back = from_openmesh(mesh);
+  const SurfaceTopology t = analyze_surface(back.vertices, back.facets);
+  EXPECT_TRUE(t.watertight && t.oriented);
+  EXPECT_EQ(t.genus, std::vector<int>{0});
+}
+
+}  // namespace
+}  // namespace lsr::adapters
