@@ -1,52 +1,83 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file lsrecon_main.cpp
-/// @brief The lsrecon command line: reconstructs a generated cloud (file input arrives with the
-/// PCL/OpenMesh adapters, issue 4) and writes the result as .vtu, printing progress and timings.
+/// @brief The lsrecon command line: a point cloud file (or a generated demo cloud) in, a closed
+/// surface (3D) or closed curves (2D) out. Progress and timings on stderr, an optional JSON
+/// report, outputs written atomically, non-zero exit with a message that says what to change.
+#include "curve_files.h"
+#include "image_points.h"
+#include "lsrecon/adapters/openmesh_mesh.h"
+#include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"
-#include "lsrecon/core/vtu_writer.h"
 #include "stopwatch.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 #include <string>
 
 namespace {
 
-const char* kUsage = R"(usage: lsrecon [options]
+const char* kUsage = R"(usage: lsrecon INPUT OUTPUT [options]
+       lsrecon --demo SHAPE OUTPUT [options]
 
-Reconstructs a closed surface (3D) or closed curves (2D) from a generated, unoriented point
-cloud with the level-set method of Claisse & Frey (2011), and writes it as .vtu (ParaView).
+Reconstructs a closed surface (3D) or closed curves (2D) from unoriented points with the
+level-set method of Claisse & Frey (2011). No normals needed.
 
-options:
-  --shape NAME          3D: torus | sphere | two-spheres; 2D: star | three-shapes
-                                                              (default: torus)
-  --points N            number of generated points, >= 4     (default: 20000)
-  --resolution R        1/h_min in the unit box; 0 = from the data (default: 0)
-  --alpha A             attraction weight; 0 = +2 enclosing, -2 inside (default: 0)
-  --max-iterations N    time steps at most                    (default: 1000)
-  --tolerance EPS       stopping tolerance in the unit box; 0 = h_min (default: 0)
-  --init enclose|inside where the front starts                (default: enclose)
-  --out DIR             output folder, created if missing     (default: lsrecon-out)
-  --quiet               no progress on stderr
-  --help                this text
+INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] per line), .obj .off .stl (vertices),
+        .pgm .png (2D: every dark pixel is a point)
+OUTPUT  3D: .ply .obj .off .stl     2D: .svg (drawing) or .txt (one closed polyline per loop)
+SHAPE   generated clouds: torus sphere two-spheres (3D), star three-shapes (2D)
+
+options (lengths are in the unit box the data is mapped into: its bounding ball has radius 0.4)
+  --resolution R                1/h_min, finest mesh size; 0 = from the data     (default 0)
+  --max-size H                  coarsest mesh size                                (default 0.125)
+  --grading C                   mesh grading; smaller = wider fine band           (default 2)
+  --alpha A                     attraction; 0 = +2 (enclose), -2 (inside)         (default 0)
+  --curvature-weight B          smoothness; < 0 = automatic from h_min and noise  (default -1)
+  --time-step DT                0 = 0.2/|alpha|                                   (default 0)
+  --max-iterations N            time steps at most                                (default 1000)
+  --tolerance EPS               stop when data and surface are this close; 0 = h_min (default 0)
+  --renormalization-interval K  0 = automatic                                     (default 0)
+  --init enclose|inside         start around the data or inside it               (default enclose)
+  --dim 2|3                     force the dimension; else 2 for planar input      (default auto)
+  --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
+  --threads N                   0 = all cores                                     (default 0)
+  --max-mesh-vertices N         refuse larger meshes                              (default 20000000)
+  --points N                    points of a --demo cloud                          (default 20000)
+  --report FILE.json            write figures of the run as JSON
+  --quiet                       no progress on stderr
+  --help                        this text
+
+exit status: 0 written (see the summary for convergence), 1 bad input or file error,
+             2 bad command line, 130 interrupted (nothing written)
 )";
 
-struct Options {
-  std::string shape = "torus";
-  int points = 20000;
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted = true; }
+
+struct Cli {
+  std::string input, output, demo, report;
   lsr::ReconstructionOptions solver;
-  std::string out = "lsrecon-out";
+  int dim = 0;
+  long decimate = 0;
+  int points = 20000;
   bool quiet = false;
 };
 
-[[noreturn]] void fail(const std::string& message) {
-  std::cerr << "lsrecon: " << message << "\n(run lsrecon --help for the options)\n";
+[[noreturn]] void usage_error(const std::string& message) {
+  std::cerr << "lsrecon: " << message << "\n(run lsrecon --help for the usage)\n";
   std::exit(2);
 }
 
@@ -54,16 +85,29 @@ double number(const std::string& flag, const char* text, double lo, double hi) {
   char* end = nullptr;
   const double v = std::strtod(text, &end);
   if (end == text || *end != '\0' || !(v >= lo && v <= hi)) {
-    fail(flag + " expects a number between " + std::to_string(lo) + " and " + std::to_string(hi) +
-         ", got '" + text + "'");
+    std::ostringstream range;
+    range << lo << " and " << hi;
+    usage_error(flag + " expects a number between " + range.str() + ", got '" + text + "'");
   }
   return v;
 }
 
-bool is_2d(const std::string& shape) { return shape == "star" || shape == "three-shapes"; }
+std::string extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
 
-Options parse(int argc, char** argv) {
-  Options o;
+bool is_2d_shape(const std::string& s) { return s == "star" || s == "three-shapes"; }
+bool is_curve_output(const std::string& ext) { return ext == "svg" || ext == "txt"; }
+bool is_mesh_output(const std::string& ext) { return ext == "ply" || ext == "obj" || ext == "off" || ext == "stl"; }
+
+Cli parse(int argc, char** argv) {
+  Cli c;
+  std::vector<std::string> positional;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -71,119 +115,290 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     if (a == "--quiet") {
-      o.quiet = true;
+      c.quiet = true;
       continue;
     }
-    if (i + 1 >= argc) fail("unknown option or missing value: " + a);
+    if (a.rfind("--", 0) != 0) {
+      positional.push_back(a);
+      continue;
+    }
+    if (i + 1 >= argc) usage_error("option " + a + " needs a value");
     const char* v = argv[++i];
-    if (a == "--shape") {
-      o.shape = v;
-      if (!is_2d(o.shape) && o.shape != "sphere" && o.shape != "torus" && o.shape != "two-spheres") {
-        fail("--shape must be torus, sphere, two-spheres, star or three-shapes, got '" + o.shape + "'");
-      }
-    } else if (a == "--points") {
-      o.points = int(number(a, v, 4, 5e7));
+    auto& s = c.solver;
+    if (a == "--demo") {
+      c.demo = v;
     } else if (a == "--resolution") {
-      const double r = number(a, v, 0, 8192);
-      if (r > 0 && r < 4) fail("--resolution must be 0 (automatic) or at least 4");
-      o.solver.h_min = r > 0 ? 1.0 / r : 0.0;
+      const double r = number(a, v, 0, 1e5);
+      if (r > 0 && r < 4) usage_error("--resolution must be 0 (automatic) or at least 4");
+      s.h_min = r > 0 ? 1.0 / r : 0.0;
+    } else if (a == "--max-size") {
+      s.h_max = number(a, v, 1e-4, 1);
+    } else if (a == "--grading") {
+      s.grading = number(a, v, 1e-3, 100);
     } else if (a == "--alpha") {
-      o.solver.alpha = number(a, v, -100, 100);
+      s.alpha = number(a, v, -1e3, 1e3);
+    } else if (a == "--curvature-weight") {
+      s.curvature_weight = number(a, v, -1, 1e3);
+    } else if (a == "--time-step") {
+      s.time_step = number(a, v, 0, 100);
     } else if (a == "--max-iterations") {
-      o.solver.max_iterations = int(number(a, v, 1, 1e6));
+      s.max_iterations = int(number(a, v, 1, 1e7));
     } else if (a == "--tolerance") {
-      o.solver.tolerance = number(a, v, 0, 0.5);
+      s.tolerance = number(a, v, 0, 0.5);
+    } else if (a == "--renormalization-interval") {
+      s.renormalization_interval = int(number(a, v, 0, 1000));
     } else if (a == "--init") {
       const std::string init = v;
-      if (init != "enclose" && init != "inside") fail("--init must be enclose or inside, got '" + init + "'");
-      o.solver.initial_front = init == "inside" ? lsr::InitialFront::inside : lsr::InitialFront::enclosing;
-    } else if (a == "--out") {
-      o.out = v;
+      if (init != "enclose" && init != "inside") usage_error("--init must be enclose or inside, got '" + init + "'");
+      s.initial_front = init == "inside" ? lsr::InitialFront::inside : lsr::InitialFront::enclosing;
+    } else if (a == "--dim") {
+      c.dim = int(number(a, v, 2, 3));
+    } else if (a == "--decimate") {
+      c.decimate = long(number(a, v, 4, 1e9));
+    } else if (a == "--threads") {
+      s.threads = int(number(a, v, 0, 1024));
+    } else if (a == "--max-mesh-vertices") {
+      s.max_vertices = lsr::Index(number(a, v, 1000, 2e9));
+    } else if (a == "--points") {
+      c.points = int(number(a, v, 4, 5e7));
+    } else if (a == "--report") {
+      c.report = v;
     } else {
-      fail("unknown option " + a);
+      usage_error("unknown option " + a);
     }
   }
-  return o;
+  const std::size_t expected = c.demo.empty() ? 2 : 1;
+  if (positional.size() != expected) {
+    usage_error(c.demo.empty() ? "expected INPUT and OUTPUT" : "with --demo, expected only OUTPUT");
+  }
+  if (c.demo.empty()) c.input = positional[0];
+  c.output = positional.back();
+  if (!c.demo.empty() && c.demo != "torus" && c.demo != "sphere" && c.demo != "two-spheres" && !is_2d_shape(c.demo)) {
+    usage_error("--demo must be torus, sphere, two-spheres, star or three-shapes, got '" + c.demo + "'");
+  }
+  const std::string out = extension(c.output);
+  if (!is_curve_output(out) && !is_mesh_output(out)) {
+    usage_error("cannot write '" + c.output + "': use .ply .obj .off .stl (3D) or .svg .txt (2D)");
+  }
+  if (c.decimate > 0 && is_curve_output(out)) usage_error("--decimate applies to 3D meshes only");
+  return c;
 }
 
-lsr::Points<3> generate_3d(const Options& o) {
-  if (o.shape == "sphere") return lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(o.points);
-  if (o.shape == "torus") return lsr::Torus{lsr::Vec<3>(0, 0, 0), 1.0, 0.4}.sample(o.points);
-  lsr::Points<3> p = lsr::Sphere{lsr::Vec<3>(-1.3, 0, 0), 1.0}.sample(o.points / 2);
-  for (const auto& q : lsr::Sphere{lsr::Vec<3>(1.3, 0, 0), 1.0}.sample(o.points - o.points / 2)) p.push_back(q);
-  return p;
-}
+const double kPi = std::acos(-1.0);
 
 lsr::Points<2> star(int n, lsr::Vec<2> center, double radius) {
-  const double pi = std::acos(-1.0);
   lsr::Points<2> p;
   for (int i = 0; i < n; ++i) {
-    const double t = 2 * pi * i / n;
+    const double t = 2 * kPi * i / n;
     p.push_back(center + radius * (1 + 0.3 * std::cos(5 * t)) * lsr::Vec<2>(std::cos(t), std::sin(t)));
   }
   return p;
 }
 
-lsr::Points<2> generate_2d(const Options& o) {
-  if (o.shape == "star") return star(o.points, lsr::Vec<2>(0, 0), 1.0);
-  lsr::Points<2> p = lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}.sample(o.points / 3);
-  for (const auto& q : lsr::Circle{lsr::Vec<2>(0.6, 0.8), 0.5}.sample(o.points / 3)) p.push_back(q);
-  for (const auto& q : star(o.points - 2 * (o.points / 3), lsr::Vec<2>(0.6, -0.9), 0.5)) p.push_back(q);
-  return p;
+// The input as 3D points and its dimension.
+struct Input {
+  lsr::Points<3> points;
+  int dim = 3;
+  std::size_t skipped = 0;
+};
+
+Input generate(const Cli& c) {
+  Input in;
+  if (is_2d_shape(c.demo)) {
+    lsr::Points<2> p;
+    if (c.demo == "star") {
+      p = star(c.points, lsr::Vec<2>(0, 0), 1.0);
+    } else {
+      p = lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}.sample(c.points / 3);
+      for (const auto& q : lsr::Circle{lsr::Vec<2>(0.6, 0.8), 0.5}.sample(c.points / 3)) p.push_back(q);
+      for (const auto& q : star(c.points - 2 * (c.points / 3), lsr::Vec<2>(0.6, -0.9), 0.5)) p.push_back(q);
+    }
+    for (const auto& q : p) in.points.emplace_back(q.x(), q.y(), 0.0);
+    in.dim = 2;
+    return in;
+  }
+  if (c.demo == "sphere") {
+    in.points = lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(c.points);
+  } else if (c.demo == "torus") {
+    in.points = lsr::Torus{lsr::Vec<3>(0, 0, 0), 1.0, 0.4}.sample(c.points);
+  } else {
+    in.points = lsr::Sphere{lsr::Vec<3>(-1.3, 0, 0), 1.0}.sample(c.points / 2);
+    for (const auto& q : lsr::Sphere{lsr::Vec<3>(1.3, 0, 0), 1.0}.sample(c.points - c.points / 2)) in.points.push_back(q);
+  }
+  return in;
+}
+
+Input read_input(const Cli& c) {
+  Input in;
+  const std::string ext = extension(c.input);
+  if (ext == "pgm" || ext == "ppm" || ext == "pnm" || ext == "png") {
+    for (const auto& p : lsr::demos::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
+    in.dim = 2;
+    return in;
+  }
+  lsr::adapters::PointFile file = lsr::adapters::read_point_file(c.input);
+  in.points = std::move(file.points);
+  in.skipped = file.skipped;
+  bool planar = file.planar_text;
+  if (!planar && !in.points.empty()) {
+    const double z = in.points[0].z();
+    planar = std::all_of(in.points.begin(), in.points.end(), [z](const lsr::Vec<3>& p) { return p.z() == z; });
+  }
+  in.dim = planar ? 2 : 3;
+  return in;
 }
 
 lsr::ProgressCallback printer(bool quiet) {
-  if (quiet) return {};
-  return [last = std::string()](const std::string& stage, double fraction) mutable {
-    if (stage != last && !last.empty()) std::fprintf(stderr, "\n");
+  return [quiet, last = std::string(), clock = lsr::demos::Stopwatch(), elapsed = 0.0](
+             const std::string& stage, double fraction) mutable {
+    if (g_interrupted) return false;
+    if (quiet) return true;
+    elapsed += clock.lap();
+    if (stage != last && !last.empty()) std::fputc('\n', stderr);
     last = stage;
-    std::fprintf(stderr, "\r[%-5s] %3.0f%%", stage.c_str(), 100 * std::max(0.0, fraction));
+    std::fprintf(stderr, "\r[%-5s] %3.0f%%  %6.1f s", stage.c_str(), 100 * std::max(0.0, fraction), elapsed);
     return true;
   };
+}
+
+double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+struct Outcome {
+  std::size_t vertices = 0, faces = 0, curves = 0;
+  int components = 0;
+  bool watertight = false;
+};
+
+template <int D>
+void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
+                  double total, const std::map<std::string, double>& extra_seconds) {
+  lsr::write_file_atomically(c.report, [&](const std::string& file) {
+    std::ofstream j(file);
+    if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
+    j.precision(10);
+    j << "{\n  \"input\": \"" << (c.demo.empty() ? c.input : "demo:" + c.demo) << "\",\n"
+      << "  \"input_points\": " << in.points.size() + in.skipped << ",\n"
+      << "  \"skipped_points\": " << in.skipped + r.skipped_points << ",\n"
+      << "  \"dimension\": " << D << ",\n  \"h_min\": " << r.h_min << ",\n"
+      << "  \"mesh_vertices\": " << r.mesh_vertices << ",\n  \"mesh_simplices\": " << r.mesh_simplices << ",\n"
+      << "  \"time_steps\": " << r.iterations << ",\n  \"best_step\": " << r.best_iteration << ",\n"
+      << "  \"converged\": " << (r.status == lsr::ReconstructionStatus::converged ? "true" : "false") << ",\n"
+      << "  \"residual\": " << r.residual << ",\n  \"tolerance\": " << r.tolerance << ",\n"
+      << "  \"noise\": " << r.noise << ",\n  \"seconds\": {";
+    std::map<std::string, double> seconds = r.seconds;
+    for (const auto& [k, v] : extra_seconds) seconds[k] = v;
+    bool first = true;
+    for (const auto& [k, v] : seconds) {
+      j << (first ? "" : ",") << "\n    \"" << k << "\": " << v;
+      first = false;
+    }
+    j << "\n  },\n  \"total_seconds\": " << total << ",\n  \"peak_memory_mib\": " << peak_memory_mib() << ",\n"
+      << "  \"output\": \"" << c.output << "\",\n  \"output_vertices\": " << out.vertices << ",\n";
+    if (D == 2) {
+      j << "  \"curves\": " << out.curves << ",\n";
+    } else {
+      j << "  \"output_faces\": " << out.faces << ",\n";
+    }
+    j << "  \"components\": " << out.components << ",\n  \"watertight\": " << (out.watertight ? "true" : "false") << "\n}\n";
+    if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
+  });
 }
 
 template <int D>
 void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   if (!quiet) {
-    std::fprintf(stderr, "\n");
+    std::fputc('\n', stderr);
     for (const auto& [stage, seconds] : r.seconds) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), seconds);
   }
-  const char* status = r.status == lsr::ReconstructionStatus::converged       ? "converged"
-                       : r.status == lsr::ReconstructionStatus::not_converged ? "NOT converged (best iterate)"
-                                                                              : "cancelled";
-  std::printf("%s after %d steps (best %d): max |u| on the data %.3g (tolerance %.3g); mesh %d vertices, "
-              "h_min = 1/%.0f\n",
-              status, r.iterations, r.best_iteration, r.residual, r.tolerance, r.mesh_vertices, 1.0 / r.h_min);
+  if (r.status == lsr::ReconstructionStatus::not_converged) {
+    std::fprintf(stderr, "lsrecon: not converged: the best iterate (step %d, residual %.3g > tolerance %.3g) is "
+                         "written [hint: noisy data stays above the tolerance; raise --curvature-weight or "
+                         "--tolerance, or --max-iterations if it was still improving]\n",
+                 r.best_iteration, r.residual, r.tolerance);
+  }
+}
+
+int run(const Cli& c) {
+  lsr::demos::Stopwatch total;
+  lsr::demos::Stopwatch clock;
+  Input in = c.demo.empty() ? read_input(c) : generate(c);
+  const double read_seconds = clock.lap();
+  if (c.dim != 0) in.dim = c.dim;
+  const std::string out_ext = extension(c.output);
+  if (in.dim == 2 && is_mesh_output(out_ext)) {
+    throw lsr::InvalidInput("the input is planar (2D), so the result is curves, not a mesh",
+                            "write .svg or .txt, or pass --dim 3 for a flat 3D shape");
+  }
+  if (in.dim == 3 && is_curve_output(out_ext)) {
+    throw lsr::InvalidInput("the input is 3D, so the result is a surface",
+                            "write .ply, .obj, .off or .stl, or pass --dim 2 to use x and y only");
+  }
+  if (!c.quiet) {
+    std::fprintf(stderr, "[read ] %zu points (%zu skipped: NaN / infinite), %dD, %.2f s\n", in.points.size(),
+                 in.skipped, in.dim, read_seconds);
+  }
+  Outcome out;
+  if (in.dim == 2) {
+    lsr::Points<2> planar;
+    for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
+    const auto r = lsr::reconstruct<2>(planar, c.solver, printer(c.quiet));
+    summarize(r, c.quiet);
+    if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
+    clock.lap();
+    if (out_ext == "svg") {
+      lsr::demos::write_svg(c.output, r.surface.vertices, r.loops, planar);
+    } else {
+      lsr::demos::write_polylines(c.output, r.surface.vertices, r.loops);
+    }
+    out = {r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true};
+    const double write_seconds = clock.lap();
+    if (!c.report.empty()) write_report(c, in, r, out, total.lap(), {{"read", read_seconds}, {"write", write_seconds}});
+    std::printf("%s: %zu closed curve(s), %zu vertices, %s after %d steps, %.1f s -> %s\n",
+                c.demo.empty() ? c.input.c_str() : c.demo.c_str(), r.loops.size(), r.surface.vertices.size(),
+                r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations,
+                total.lap() + read_seconds, c.output.c_str());
+    return 0;
+  }
+  const auto r = lsr::reconstruct<3>(in.points, c.solver, printer(c.quiet));
+  summarize(r, c.quiet);
+  if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
+  clock.lap();
+  lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
+  if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
+  const double decimate_seconds = clock.lap();
+  lsr::adapters::write_mesh_file(mesh, c.output);
+  const double write_seconds = clock.lap();
+  const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
+  const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);
+  out = {written.vertices.size(), written.facets.size(), 0, t.components, t.watertight};
+  const double seconds = total.lap();
+  if (!c.report.empty()) {
+    write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"decimate", decimate_seconds}, {"write", write_seconds}});
+  }
+  std::printf("%s: %zu triangles, %d component(s), %s, %s after %d steps, %.1f s -> %s\n",
+              c.demo.empty() ? c.input.c_str() : c.demo.c_str(), written.facets.size(), t.components,
+              t.watertight ? "watertight" : "NOT watertight",
+              r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations, seconds,
+              c.output.c_str());
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Options o = parse(argc, argv);
+  const Cli c = parse(argc, argv);
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   try {
-    std::filesystem::create_directories(o.out);
-    if (is_2d(o.shape)) {
-      const auto r = lsr::reconstruct<2>(generate_2d(o), o.solver, printer(o.quiet));
-      summarize(r, o.quiet);
-      const std::string file = o.out + "/curves.vtu";
-      lsr::write_vtu<2, 2>(file, r.surface.vertices, r.surface.facets);
-      std::printf("%zu closed curves, %zu vertices -> %s\n", r.loops.size(), r.surface.vertices.size(), file.c_str());
-      return r.status == lsr::ReconstructionStatus::cancelled ? 1 : 0;
-    }
-    const auto r = lsr::reconstruct<3>(generate_3d(o), o.solver, printer(o.quiet));
-    summarize(r, o.quiet);
-    const lsr::SurfaceTopology t = lsr::analyze_surface(r.surface.vertices, r.surface.facets);
-    const std::string file = o.out + "/surface.vtu";
-    lsr::write_vtu<3, 3>(file, r.surface.vertices, r.surface.facets);
-    std::printf("%zu triangles, %d component(s), genus", r.surface.facets.size(), t.components);
-    for (int g : t.genus) std::printf(" %d", g);
-    std::printf(", %s -> %s\n", t.watertight ? "watertight" : "NOT watertight", file.c_str());
-    return r.status == lsr::ReconstructionStatus::cancelled ? 1 : 0;
-  } catch (const lsr::Error& e) {
-    std::cerr << "lsrecon: " << e.what() << '\n';
-    return 1;
+    const int status = run(c);
+    if (status == 130) std::fprintf(stderr, "\nlsrecon: interrupted; nothing was written\n");
+    return status;
   } catch (const std::exception& e) {
-    std::cerr << "lsrecon: " << e.what() << '\n';
+    std::cerr << (c.quiet ? "" : "\n") << "lsrecon: " << e.what() << '\n';
     return 1;
   }
 }

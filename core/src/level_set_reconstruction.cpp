@@ -43,6 +43,9 @@ class StageClock {
 template <int D>
 void require_spanning(const Points<D>& points) {
   const char* shape = D == 2 ? "closed curve" : "closed surface";
+  if (points.empty()) {
+    throw InvalidInput("the point set is empty (no finite points)", "pass a cloud with points; NaN / infinite points are skipped");
+  }
   if (points.size() < std::size_t(D + 1)) {
     throw InvalidInput(std::to_string(points.size()) + " valid points cannot define a " + shape,
                        "pass at least " + std::to_string(D + 1) + " distinct points; a useful "

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file point_files.cpp
+#include "lsrecon/adapters/point_files.h"
+
+#include "lsrecon/adapters/openmesh_mesh.h"
+#include "lsrecon/adapters/pcl_points.h"
+#include "lsrecon/core/errors.h"
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace lsr::adapters {
+namespace {
+
+std::string extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+PointFile read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
+  PointFile out;
+  std::string line;
+  int columns = 0;
+  for (long number = 1; std::getline(in, line); ++number) {
+    const std::size_t start = line.find_first_not_of(" \t\r");
+    if (start == std::string::npos || line[start] == '#') continue;
+    std::istringstream fields(line);
+    double v[3] = {0, 0, 0};
+    int n = 0;
+    std::string token;
+    while (n < 3 && fields >> token) {
+      char* end = nullptr;
+      v[n] = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0') {
+        throw Error(path + ":" + std::to_string(number) + ": '" + token + "' is not a number",
+                    "a point file has 'x y' or 'x y z' per line (# starts a comment)");
+      }
+      ++n;
+    }
+    if (n < 2) {
+      throw Error(path + ":" + std::to_string(number) + ": expected 2 or 3 numbers",
+                  "a point file has 'x y' or 'x y z' per line (# starts a comment)");
+    }
+    if (columns == 0) columns = n;
+    const Vec<3> p(v[0], v[1], v[2]);
+    if (p.allFinite()) {
+      out.points.push_back(p);
+    } else {
+      ++out.skipped;
+    }
+  }
+  out.planar_text = columns == 2;
+  return out;
+}
+
+// PCL 1.13's PCDReader::read crashes on a file whose header it has rejected (seen on a text
+// file without a header): check the header first.
+bool plausible_pcd(const std::string& path) {
+  pcl::PCDReader reader;
+  pcl::PCLPointCloud2 header;
+  Eigen::Vector4f origin;
+  Eigen::Quaternionf orientation;
+  int version = 0, data_type = 0;
+  unsigned int data_index = 0;
+  if (reader.readHeader(path, header, origin, orientation, version, data_type, data_index) < 0) return false;
+  if (std::size_t(header.width) * header.height == 0) return false;
+  int xyz = 0;
+  for (const auto& f : header.fields) xyz += (f.name == "x" || f.name == "y" || f.name == "z") ? 1 : 0;
+  return xyz == 3;
+}
+
+template <class Load>
+PointFile read_pcl(const std::string& path, Load load) {
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path and the file's permissions");
+  const bool pcd = path.size() > 4 && (path.substr(path.size() - 4) == ".pcd" || path.substr(path.size() - 4) == ".PCD");
+  if ((pcd && !plausible_pcd(path)) || load(path, cloud) < 0) {
+    throw Error("cannot read the point cloud in " + path, "the file is corrupt or not a PCD / PLY point cloud");
+  }
+  ConvertedPoints c = points_from_cloud(cloud);
+  PointFile out;
+  out.points = std::move(c.points);
+  out.skipped = c.skipped_non_finite;
+  return out;
+}
+
+}  // namespace
+
+PointFile read_point_file(const std::string& path) {
+  const std::string ext = extension(path);
+  if (ext == "xyz" || ext == "txt" || ext == "xy" || ext == "pts") return read_text(path);
+  if (ext == "pcd") {
+    return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPCDFile(p, c); });
+  }
+  if (ext == "ply") {
+    return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPLYFile(p, c); });
+  }
+  if (ext == "obj" || ext == "off" || ext == "stl") {
+    PointFile out;
+    out.points = read_mesh_vertices(path);
+    return out;
+  }
+  throw Error("unknown input format '" + ext + "' (" + path + ")",
+              "use .pcd, .ply, .xyz, .txt, .obj, .off or .stl (and .pgm / .png images for 2D)");
+}
+
+}  // namespace lsr::adapters
