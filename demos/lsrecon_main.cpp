@@ -53,6 +53,7 @@ options (lengths are in the unit box the data is mapped into: its bounding ball 
   --init enclose|inside         start around the data or inside it               (default enclose)
   --dim 2|3                     force the dimension; else 2 for planar input      (default auto)
   --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
+  --smooth N                    N rounds of Laplace smoothing of the 3D result    (default 0)
   --threads N                   0 = all cores                                     (default 0)
   --max-mesh-vertices N         refuse larger meshes                              (default 20000000)
   --points N                    points of a --demo cloud                          (default 20000)
@@ -72,6 +73,7 @@ struct Cli {
   lsr::ReconstructionOptions solver;
   int dim = 0;
   long decimate = 0;
+  unsigned smooth = 0;
   int points = 20000;
   bool quiet = false;
 };
@@ -155,6 +157,8 @@ Cli parse(int argc, char** argv) {
       c.dim = int(number(a, v, 2, 3));
     } else if (a == "--decimate") {
       c.decimate = long(number(a, v, 4, 1e9));
+    } else if (a == "--smooth") {
+      c.smooth = unsigned(number(a, v, 0, 1000));
     } else if (a == "--threads") {
       s.threads = int(number(a, v, 0, 1024));
     } else if (a == "--max-mesh-vertices") {
@@ -180,7 +184,7 @@ Cli parse(int argc, char** argv) {
   if (!is_curve_output(out) && !is_mesh_output(out)) {
     usage_error("cannot write '" + c.output + "': use .ply .obj .off .stl (3D) or .svg .txt (2D)");
   }
-  if (c.decimate > 0 && is_curve_output(out)) usage_error("--decimate applies to 3D meshes only");
+  if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) usage_error("--decimate and --smooth apply to 3D meshes only");
   return c;
 }
 
@@ -249,14 +253,20 @@ Input read_input(const Cli& c) {
 }
 
 lsr::ProgressCallback printer(bool quiet) {
-  return [quiet, last = std::string(), clock = lsr::demos::Stopwatch(), elapsed = 0.0](
+  return [quiet, last = std::string(), clock = lsr::demos::Stopwatch(), elapsed = 0.0, stage_seconds = 0.0](
              const std::string& stage, double fraction) mutable {
     if (g_interrupted) return false;
     if (quiet) return true;
-    elapsed += clock.lap();
-    if (stage != last && !last.empty()) std::fputc('\n', stderr);
+    if (stage != last) {
+      if (!last.empty()) std::fputc('\n', stderr);
+      stage_seconds = 0.0;
+    }
     last = stage;
+    const double lap = clock.lap();
+    elapsed += lap;
+    stage_seconds += lap;
     std::fprintf(stderr, "\r[%-5s] %3.0f%%  %6.1f s", stage.c_str(), 100 * std::max(0.0, fraction), elapsed);
+    if (fraction > 0.05) std::fprintf(stderr, "  ETA %5.1f s ", stage_seconds * (1 - fraction) / fraction);
     return true;
   };
 }
@@ -369,7 +379,8 @@ int run(const Cli& c) {
   clock.lap();
   lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
   if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
-  const double decimate_seconds = clock.lap();
+  lsr::adapters::smooth(mesh, c.smooth);
+  const double postprocess_seconds = clock.lap();
   lsr::adapters::write_mesh_file(mesh, c.output);
   const double write_seconds = clock.lap();
   const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
@@ -377,7 +388,7 @@ int run(const Cli& c) {
   out = {written.vertices.size(), written.facets.size(), 0, t.components, t.watertight};
   const double seconds = total.lap();
   if (!c.report.empty()) {
-    write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"decimate", decimate_seconds}, {"write", write_seconds}});
+    write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"postprocess", postprocess_seconds}, {"write", write_seconds}});
   }
   std::printf("%s: %zu triangles, %d component(s), %s, %s after %d steps, %.1f s -> %s\n",
               c.demo.empty() ? c.input.c_str() : c.demo.c_str(), written.facets.size(), t.components,

@@ -9,6 +9,7 @@
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 
 #include <algorithm>
 #include <cctype>
@@ -78,6 +79,18 @@ std::size_t decimate(TriMesh& mesh, std::size_t target_faces) {
   mesh.garbage_collection();
   if (mesh.has_vertex_normals()) mesh.update_vertex_normals();
   return mesh.n_faces();
+}
+
+void smooth(TriMesh& mesh, unsigned iterations) {
+  if (iterations == 0) return;
+  if (!mesh.has_face_normals()) mesh.request_face_normals();
+  if (!mesh.has_vertex_normals()) mesh.request_vertex_normals();
+  mesh.update_normals();
+  OpenMesh::Smoother::JacobiLaplaceSmootherT<TriMesh> smoother(mesh);
+  smoother.initialize(OpenMesh::Smoother::SmootherT<TriMesh>::Tangential_and_Normal,
+                      OpenMesh::Smoother::SmootherT<TriMesh>::C1);
+  smoother.smooth(iterations);
+  mesh.update_normals();
 }
 
 Points<3> read_mesh_vertices(const std::string& path) {

@@ -331,6 +331,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   double front_distance = std::numeric_limits<double>::infinity();
   std::vector<char> pinned(at.size(), 0);
   double first_residual = std::numeric_limits<double>::infinity();
+  double progress_fraction = 0.0;
   Eigen::VectorXd best = u;
   double best_residual = std::numeric_limits<double>::infinity();
   // Renormalise every vertex: a band of a few h_min is thinner than the coarse simplices the
@@ -339,11 +340,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const double band = std::numeric_limits<double>::infinity();
   try {
     for (int n = 1; n <= o.max_iterations; ++n) {
-      // The residual falls geometrically: report the fraction of log(first / eps) done.
-      progress.update("solve", first_residual > eps && std::isfinite(first_residual)
-                                   ? std::clamp(std::log(first_residual / best_residual) /
-                                                    std::log(first_residual / eps), 0.0, 1.0)
-                                   : 0.0);
+      progress.update("solve", progress_fraction);
       SolverReport solve;
       u = semi_implicit_step(ops, d, u, step, &solve);
       r.solver_iterations += solve.iterations;
@@ -358,7 +355,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       // front_tolerance of the data; the residual is the worse of the two, in units of eps.
       const double residual = std::max(data_residual, front_distance * eps / front_tolerance);
       r.residual_history.push_back(residual / box.scale());
-      if (!std::isfinite(first_residual)) first_residual = residual;
+      // The data side falls geometrically (the front side can drop at once when a bubble
+      // vanishes): progress is the fraction of log(first / eps) it has covered, never receding.
+      if (!std::isfinite(first_residual)) first_residual = data_residual;
+      if (first_residual > eps) {
+        progress_fraction = std::max(progress_fraction, std::clamp(std::log(first_residual / std::max(data_residual, eps)) /
+                                                                       std::log(first_residual / eps), 0.0, 1.0));
+      }
       r.iterations = n;
       if (residual < best_residual) {
         best_residual = residual;

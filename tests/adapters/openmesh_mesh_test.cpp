@@ -73,5 +73,15 @@ TEST(OpenMeshAdapter, DecimationReachesTheTargetAndStaysClosed) {
   EXPECT_EQ(t.genus, std::vector<int>{0});
 }
 
+TEST(OpenMeshAdapter, SmoothingKeepsTheSurfaceClosedAndOnTheSphere) {
+  TriMesh mesh = to_openmesh(sphere().surface, sphere().normals);
+  smooth(mesh, 5);
+  const LevelSetMesh<3> back = from_openmesh(mesh);
+  const SurfaceTopology t = analyze_surface(back.vertices, back.facets);
+  EXPECT_TRUE(t.watertight && t.oriented);
+  // Laplace smoothing shrinks a sphere by O(iterations * edge^2 / r): stay within 2 h_min.
+  for (const auto& v : back.vertices) EXPECT_NEAR(v.norm(), 1.0, 2 * sphere().tolerance);
+}
+
 }  // namespace
 }  // namespace lsr::adapters

@@ -32,6 +32,10 @@ void write_mesh_file(const TriMesh& mesh, const std::string& path);
 /// returns the face count reached. Vertex normals are recomputed.
 std::size_t decimate(TriMesh& mesh, std::size_t target_faces);
 
+/// @brief Tangential and normal Laplace smoothing (OpenMesh's Jacobi smoother, C1), `iterations`
+/// rounds; keeps the connectivity. Vertex normals are recomputed.
+void smooth(TriMesh& mesh, unsigned iterations);
+
 /// @brief The vertex positions of a mesh file (OBJ, OFF, PLY, STL) read by OpenMesh.
 /// @throw lsr::Error if the file cannot be read.
 Points<3> read_mesh_vertices(const std::string& path);
