@@ -99,6 +99,18 @@ void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, std::vector<
 }
 
 template <int D>
+void NearestPointIndex<D>::within(const Vec<D>& q, double radius, std::vector<Index>& found) const {
+  double coords[D];
+  for (int d = 0; d < D; ++d) coords[d] = q[d];
+  flann::Matrix<double> query(coords, 1, D);
+  std::vector<std::vector<std::size_t>> indices;
+  std::vector<std::vector<double>> dist2;
+  flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, /*sorted=*/false);
+  impl_->index->radiusSearch(query, indices, dist2, float(radius * radius * (1 + 1e-6)), params);
+  found.assign(indices[0].begin(), indices[0].end());
+}
+
+template <int D>
 double NearestPointIndex<D>::distance(const Vec<D>& q) const {
   std::vector<double> d;
   query(Points<D>{q}, d, nullptr, 1);

@@ -34,6 +34,9 @@ class NearestPointIndex {
   /// fewer than k points in the set repeat the last found index).
   void query_k(const Points<D>& queries, int k, std::vector<Index>& nearest, int threads = 0) const;
 
+  /// @brief Indices of the data points within radius of q (any order).
+  void within(const Vec<D>& q, double radius, std::vector<Index>& found) const;
+
   /// @brief Distance from one point to the data.
   double distance(const Vec<D>& q) const;
 
