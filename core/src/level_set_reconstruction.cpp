@@ -234,9 +234,19 @@ double max_front_distance(const LevelSetMesh<D>& front, const Eigen::VectorXd& d
 }
 
 template <int D>
+double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd& u) {
+  std::vector<double> values;
+  values.reserve(at.size());
+  for (const auto& loc : at) values.push_back(interpolate(loc, u));
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+template <int D>
 void attach_output(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
-                   const Eigen::VectorXd& u, const UnitBoxTransform<D>& box) {
-  const std::vector<double> values(u.data(), u.data() + u.size());
+                   const Eigen::VectorXd& u, double level, const UnitBoxTransform<D>& box) {
+  std::vector<double> values(u.data(), u.data() + u.size());
+  for (double& v : values) v -= level;
   r.surface = extract_zero_level_set(mesh, values);
   const Eigen::VectorXd g = ops.gradient * u;
   r.normals.resize(r.surface.vertices.size());
@@ -380,7 +390,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   r.residual = best_residual / box.scale();
   r.noise /= box.scale();
-  attach_output(r, mesh, ops, best, box);
+  r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
+  attach_output(r, mesh, ops, best, r.output_level * box.scale(), box);
   clock.end("extract");
   return r;
 }

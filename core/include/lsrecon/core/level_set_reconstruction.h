@@ -55,6 +55,10 @@ struct ReconstructionOptions {
   /// at the data points, so converged parts pass through the data while slower parts (holes,
   /// concavities) still travel; pinning holds them (measured: the torus needs it).
   bool pin_reached_data = true;
+  /// Extract the level set through the data, {u = median of u at the data points}, instead of
+  /// {u = 0}. The front stops as soon as every point is within eps, so {u = 0} lies up to eps
+  /// off the data on the side it came from; the median level removes that bias.
+  bool level_through_data = true;
   InitialFront initial_front = InitialFront::enclosing;
   LinearSolver solver = LinearSolver::conjugate_gradient;
   double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
@@ -79,6 +83,7 @@ struct ReconstructionResult {
   int best_iteration = 0;           ///< the step whose u is returned
   double residual = 0.0;            ///< max |u| on the data at best_iteration, input units
   double tolerance = 0.0;           ///< the stopping tolerance, input units
+  double output_level = 0.0;        ///< the level of u extracted (0 or the median on the data), input units
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units
   double h_min = 0.0;               ///< the finest mesh size used, unit box
   double noise = 0.0;               ///< estimated noise deviation of the data, input units

@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file lsrecon_compare.cpp
+/// @brief lsrecon against PCL's reconstructors on the same clouds, in one run: time (normal
+/// estimation included where a method needs normals), peak memory, distances to the ground
+/// truth, normal consistency and topology. Writes results.md, results.csv, every mesh as PLY
+/// and, per case, lsrecon's convergence history.
+///
+///   lsrecon-compare [--out DIR] [--cases a,b,..] [--methods a,b,..] [--points N]
+///                   [--noise S] [--holes F] [--nonuniform]
+///
+/// Each (case, method) runs in a child process (this program re-run with --run) so that its
+/// peak memory is its own.
+#include "compare_cases.h"
+#include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/core/nearest_point_index.h"
+#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/core/surface_topology.h"
+#include "lsrecon/pcl/level_set_reconstruction.h"
+#include "stopwatch.h"
+
+#include <pcl/features/normal_3d_omp.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/surface/gp3.h>
+#include <pcl/surface/marching_cubes_hoppe.h>
+#include <pcl/surface/marching_cubes_rbf.h>
+#include <pcl/surface/poisson.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointNormal>;
+
+struct Settings {
+  std::string out = "compare-out";
+  std::vector<std::string> cases = lsr::demos::case_names();
+  std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson9", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
+  int points = 20000;
+  double noise = 0.0, holes = 0.0;
+  bool nonuniform = false;
+};
+
+const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  return out;
+}
+
+// Normals by PCA of 16 neighbours, oriented away from the centroid: the usual recipe for a
+// closed object, and wrong wherever the surface faces its centroid (a torus's inner side).
+Cloud with_estimated_normals(const pcl::PointCloud<pcl::PointXYZ>::Ptr& xyz) {
+  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> ne;
+  pcl::PointCloud<pcl::Normal> normals;
+  ne.setInputCloud(xyz);
+  ne.setKSearch(16);
+  ne.compute(normals);
+  Eigen::Vector4f centroid;
+  pcl::compute3DCentroid(*xyz, centroid);
+  Cloud cloud;
+  for (std::size_t i = 0; i < xyz->size(); ++i) {
+    pcl::PointNormal p;
+    p.x = (*xyz)[i].x;
+    p.y = (*xyz)[i].y;
+    p.z = (*xyz)[i].z;
+    Eigen::Vector3f n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
+    if (!n.allFinite()) continue;
+    if (n.dot(p.getVector3fMap() - centroid.head<3>()) < 0) n = -n;
+    p.normal_x = n.x();
+    p.normal_y = n.y();
+    p.normal_z = n.z();
+    cloud.push_back(p);
+  }
+  return cloud;
+}
+
+Cloud with_true_normals(const lsr::demos::CompareCase& c) {
+  Cloud cloud;
+  for (std::size_t i = 0; i < c.points.size(); ++i) {
+    pcl::PointNormal p;
+    p.x = float(c.points[i].x());
+    p.y = float(c.points[i].y());
+    p.z = float(c.points[i].z());
+    p.normal_x = float(c.normals[i].x());
+    p.normal_y = float(c.normals[i].y());
+    p.normal_z = float(c.normals[i].z());
+    cloud.push_back(p);
+  }
+  return cloud;
+}
+
+// PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
+// weld positions within 1e-7 of the diagonal (float precision) so topology can be judged.
+void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
+          std::vector<std::array<lsr::Index, 3>>& triangles) {
+  lsr::Points<3> raw;
+  std::vector<std::array<lsr::Index, 3>> soup;
+  lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
+  // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
+  // rounding to cells it never separates two copies that straddle a cell boundary.
+  const double tolerance = 1e-6 * diagonal;
+  std::vector<lsr::Index> remap(raw.size(), -1);
+  vertices.clear();
+  if (!raw.empty()) {
+    const lsr::NearestPointIndex<3> index(raw);
+    std::vector<lsr::Index> near;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (remap[i] >= 0) continue;
+      remap[i] = lsr::Index(vertices.size());
+      vertices.push_back(raw[i]);
+      index.within(raw[i], tolerance, near);
+      for (lsr::Index j : near) {
+        if (remap[j] < 0) remap[j] = remap[i];
+      }
+    }
+  }
+  triangles.clear();
+  for (auto t : soup) {
+    for (auto& v : t) v = remap[v];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+  }
+}
+
+struct Produced {
+  pcl::PolygonMesh mesh;
+  std::string note;
+  std::vector<double> residuals;  // lsrecon only
+};
+
+Produced run_method(const std::string& method, const lsr::demos::CompareCase& c) {
+  Produced out;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  if (method == "lsrecon") {
+    pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+    ls.setInputCloud(xyz);
+    ls.reconstruct(out.mesh);
+    out.note = ls.getStatus().converged ? "converged" : "not converged";
+    return out;
+  }
+  Cloud::Ptr cloud(new Cloud(method == "poisson8-true" ? with_true_normals(c) : with_estimated_normals(xyz)));
+  if (method.rfind("poisson", 0) == 0) {
+    pcl::Poisson<pcl::PointNormal> poisson;
+    poisson.setDepth(method == "poisson9" ? 9 : 8);
+    poisson.setInputCloud(cloud);
+    poisson.reconstruct(out.mesh);
+    out.note = method == "poisson8-true" ? "true normals" : "estimated normals";
+  } else if (method == "mc-hoppe") {
+    pcl::MarchingCubesHoppe<pcl::PointNormal> mc;
+    mc.setInputCloud(cloud);
+    mc.setGridResolution(100, 100, 100);
+    mc.setIsoLevel(0.0f);
+    mc.setPercentageExtendGrid(0.05f);
+    mc.reconstruct(out.mesh);
+    out.note = "grid 100^3";
+  } else if (method == "mc-rbf") {
+    Cloud::Ptr few(new Cloud);
+    const std::size_t stride = std::max<std::size_t>(1, cloud->size() / kRbfPoints);
+    for (std::size_t i = 0; i < cloud->size(); i += stride) few->push_back((*cloud)[i]);
+    pcl::MarchingCubesRBF<pcl::PointNormal> mc;
+    mc.setInputCloud(few);
+    mc.setGridResolution(60, 60, 60);
+    mc.setIsoLevel(0.0f);
+    mc.setPercentageExtendGrid(0.05f);
+    mc.setOffSurfaceDisplacement(float(0.01 * c.diagonal));
+    mc.reconstruct(out.mesh);
+    out.note = "subsampled to " + std::to_string(few->size()) + " points, grid 60^3";
+  } else if (method == "gp3") {
+    pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
+    pcl::GreedyProjectionTriangulation<pcl::PointNormal> gp3;
+    gp3.setSearchRadius(0.05 * c.diagonal);
+    gp3.setMu(2.5);
+    gp3.setMaximumNearestNeighbors(100);
+    gp3.setMaximumSurfaceAngle(M_PI / 4);
+    gp3.setMinimumAngle(M_PI / 18);
+    gp3.setMaximumAngle(2 * M_PI / 3);
+    gp3.setNormalConsistency(false);
+    gp3.setInputCloud(cloud);
+    gp3.setSearchMethod(tree);
+    gp3.reconstruct(out.mesh);
+    out.note = "radius 5% of diagonal";
+  } else {
+    throw lsr::InvalidInput("unknown method '" + method + "'",
+                            "use lsrecon, poisson8, poisson9, poisson8-true, mc-hoppe, mc-rbf or gp3");
+  }
+  return out;
+}
+
+double peak_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;
+}
+
+// Child: one case, one method; prints one CSV row.
+int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
+  const lsr::demos::CompareCase c = lsr::demos::make_case(case_name, s.points, s.noise, s.holes, s.nonuniform);
+  lsr::demos::Stopwatch clock;
+  const Produced p = run_method(method, c);
+  const double seconds = clock.lap();
+  const double memory = peak_mib();
+  lsr::Points<3> vertices;
+  std::vector<std::array<lsr::Index, 3>> triangles;
+  weld(p.mesh, c.diagonal, vertices, triangles);
+  const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
+  const lsr::SurfaceDistances d = lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000);
+  pcl::io::savePLYFileBinary(s.out + "/" + case_name + "-" + method + ".ply", p.mesh);
+  std::string genus;
+  for (int g : t.genus) genus += (genus.empty() ? "" : " ") + std::to_string(g);
+  if (t.genus.size() > 4) genus = "(" + std::to_string(t.genus.size()) + " parts)";
+  std::printf("%s,%s,%zu,%.3f,%.0f,%.3e,%.3e,%.3f,%d,%d,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
+              c.points.size(), seconds, memory, d.chamfer / c.diagonal, d.hausdorff / c.diagonal, d.normal_consistency,
+              int(t.watertight), int(t.edge_manifold && t.vertex_manifold), t.components, genus.c_str(),
+              triangles.size(), p.note.c_str());
+  return 0;
+}
+
+std::string child_row(const char* self, const Settings& s, const std::string& case_name, const std::string& method) {
+  std::string command = std::string(self) + " --run " + case_name + " " + method + " --out '" + s.out + "' --points " +
+                        std::to_string(s.points) + " --noise " + std::to_string(s.noise) + " --holes " +
+                        std::to_string(s.holes) + (s.nonuniform ? " --nonuniform" : "") + " 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string row;
+  char buffer[4096];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) row = buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  if (status != 0 || row.empty()) return case_name + "," + method + ",,,,,,,,,,,,failed (exit " + std::to_string(status) + ")\n";
+  return row;
+}
+
+void write_markdown(const std::string& path, const std::vector<std::string>& rows, const Settings& s) {
+  std::ofstream md(path);
+  md << "| case | method | points | seconds | peak MiB | Chamfer / diag | Hausdorff / diag | normal consistency | "
+        "watertight | manifold | components | genus | triangles | note |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|:-:|:-:|--:|--:|--:|---|\n";
+  for (const auto& row : rows) {
+    std::stringstream in(row);
+    std::string cell;
+    md << "|";
+    int k = 0;
+    while (std::getline(in, cell, ',')) {
+      if (!cell.empty() && cell.back() == '\n') cell.pop_back();
+      if (k == 8 || k == 9) cell = cell == "1" ? "yes" : cell == "0" ? "no" : cell;
+      md << ' ' << cell << " |";
+      ++k;
+    }
+    md << '\n';
+  }
+  md << "\nPoints per case: " << s.points << ", noise " << s.noise << " x diagonal, holes " << s.holes
+     << (s.nonuniform ? ", nonuniform density" : "") << ". Seconds include normal estimation for the methods "
+     << "that need normals (PCA of 16 neighbours, oriented away from the centroid).\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Settings s;
+  std::string run_case, run_method_name;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "lsrecon-compare: %s needs a value\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if (a == "--run") {
+      run_case = value();
+      run_method_name = value();
+    } else if (a == "--out") {
+      s.out = value();
+    } else if (a == "--cases") {
+      s.cases = split(value());
+    } else if (a == "--methods") {
+      s.methods = split(value());
+    } else if (a == "--points") {
+      s.points = std::atoi(value().c_str());
+    } else if (a == "--noise") {
+      s.noise = std::atof(value().c_str());
+    } else if (a == "--holes") {
+      s.holes = std::atof(value().c_str());
+    } else if (a == "--nonuniform") {
+      s.nonuniform = true;
+    } else {
+      std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b] [--methods a,b] [--points N] "
+                           "[--noise S] [--holes F] [--nonuniform]\n  cases: sphere torus two-spheres dumbbell\n"
+                           "  methods: lsrecon poisson8 poisson9 poisson8-true mc-hoppe mc-rbf gp3\n");
+      return a == "--help" ? 0 : 2;
+    }
+  }
+  try {
+    if (!run_case.empty()) return run_one(s, run_case, run_method_name);
+    std::filesystem::create_directories(s.out);
+    std::vector<std::string> rows;
+    for (const auto& c : s.cases) {
+      for (const auto& m : s.methods) {
+        std::fprintf(stderr, "%-12s %-14s ", c.c_str(), m.c_str());
+        rows.push_back(child_row(argv[0], s, c, m));
+        std::fprintf(stderr, "%s", rows.back().c_str());
+      }
+    }
+    std::ofstream csv(s.out + "/results.csv");
+    csv << "case,method,points,seconds,peak_mib,chamfer_rel,hausdorff_rel,normal_consistency,watertight,manifold,"
+           "components,genus,triangles,note\n";
+    for (const auto& r : rows) csv << r;
+    write_markdown(s.out + "/results.md", rows, s);
+    std::fprintf(stderr, "wrote %s/results.md, results.csv and the meshes\n", s.out.c_str());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lsrecon-compare: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
