@@ -11,6 +11,7 @@
 /// Each (case, method) runs in a child process (this program re-run with --run) so that its
 /// peak memory is its own.
 #include "compare_cases.h"
+#include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/core/nearest_point_index.h"
 #include "lsrecon/core/surface_distance.h"
@@ -149,6 +150,8 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c)
     ls.setInputCloud(xyz);
     ls.reconstruct(out.mesh);
     out.note = ls.getStatus().converged ? "converged" : "not converged";
+    out.residuals = ls.getStatus().residual_history;
+    for (double& r : out.residuals) r /= ls.getStatus().tolerance;
     return out;
   }
   Cloud::Ptr cloud(new Cloud(method == "poisson8-true" ? with_true_normals(c) : with_estimated_normals(xyz)));
@@ -177,7 +180,7 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c)
     mc.setPercentageExtendGrid(0.05f);
     mc.setOffSurfaceDisplacement(float(0.01 * c.diagonal));
     mc.reconstruct(out.mesh);
-    out.note = "subsampled to " + std::to_string(few->size()) + " points, grid 60^3";
+    out.note = "subsampled to " + std::to_string(few->size()) + " points; grid 60^3";
   } else if (method == "gp3") {
     pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
     pcl::GreedyProjectionTriangulation<pcl::PointNormal> gp3;
@@ -199,6 +202,36 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c)
   return out;
 }
 
+// max distance data <-> front per time step, in units of the tolerance, on a log scale.
+void write_convergence_svg(const std::string& path, const std::string& title, const std::vector<double>& residuals) {
+  const double w = 640, h = 400, left = 60, bottom = 40, top = 30;
+  double hi = 1.0, lo = 1.0;
+  for (double r : residuals) {
+    if (std::isfinite(r) && r > 0) {
+      hi = std::max(hi, r);
+      lo = std::min(lo, r);
+    }
+  }
+  const double l0 = std::floor(std::log10(lo)), l1 = std::ceil(std::log10(hi));
+  const double n = std::max<std::size_t>(2, residuals.size());
+  auto X = [&](double i) { return left + (w - left - 20) * i / (n - 1); };
+  auto Y = [&](double r) { return top + (h - top - bottom) * (l1 - std::log10(r)) / std::max(1.0, l1 - l0); };
+  std::ofstream svg(path);
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w << "\" height=\"" << h << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << left << "\" y=\"18\">" << title
+      << ": max distance between data and front / tolerance, per time step</text>\n";
+  for (double e = l0; e <= l1; ++e) {
+    svg << "<line x1=\"" << left << "\" x2=\"" << w - 20 << "\" y1=\"" << Y(std::pow(10, e)) << "\" y2=\"" << Y(std::pow(10, e))
+        << "\" stroke=\"#ddd\"/><text x=\"8\" y=\"" << Y(std::pow(10, e)) + 4 << "\">1e" << e << "</text>\n";
+  }
+  svg << "<line x1=\"" << left << "\" x2=\"" << w - 20 << "\" y1=\"" << Y(1) << "\" y2=\"" << Y(1)
+      << "\" stroke=\"#c33\" stroke-dasharray=\"4 3\"/>\n<polyline fill=\"none\" stroke=\"#1f3a93\" stroke-width=\"2\" points=\"";
+  for (std::size_t i = 0; i < residuals.size(); ++i) {
+    if (std::isfinite(residuals[i]) && residuals[i] > 0) svg << X(double(i)) << ',' << Y(residuals[i]) << ' ';
+  }
+  svg << "\"/>\n<text x=\"" << w / 2 << "\" y=\"" << h - 10 << "\">time step (" << residuals.size() << ")</text>\n</svg>\n";
+}
+
 double peak_mib() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -217,7 +250,13 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   weld(p.mesh, c.diagonal, vertices, triangles);
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   const lsr::SurfaceDistances d = lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000);
-  pcl::io::savePLYFileBinary(s.out + "/" + case_name + "-" + method + ".ply", p.mesh);
+  // The welded mesh, without normals: PCL's marching cubes emit all-zero normals, which
+  // renderers light black.
+  lsr::LevelSetMesh<3> welded;
+  welded.vertices = vertices;
+  welded.facets = triangles;
+  lsr::adapters::write_mesh_file(lsr::adapters::to_openmesh(welded, {}), s.out + "/" + case_name + "-" + method + ".ply");
+  if (!p.residuals.empty()) write_convergence_svg(s.out + "/" + case_name + "-convergence.svg", case_name, p.residuals);
   std::string genus;
   for (int g : t.genus) genus += (genus.empty() ? "" : " ") + std::to_string(g);
   if (t.genus.size() > 4) genus = "(" + std::to_string(t.genus.size()) + " parts)";

@@ -1,62 +1,87 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file lsrecon_snapshot.cpp
-/// @brief Renders a .vtu written by lsrecon to a PNG, offscreen (run under xvfb-run):
-///   lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip | --top]
-/// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges, which
-/// makes the grading of an adaptive mesh visible; --top looks down the z axis. Flat (2D) data
-/// is always seen from above.
+/// @brief Renders meshes (.ply, .vtu) to a PNG, offscreen (run under xvfb-run), one viewport
+/// per input with its name as a label:
+///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --top] [--columns N] [--size W H]
+/// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
+/// grading of an adaptive mesh); --top looks down the z axis. Flat (2D) data is seen from above.
+/// Back faces are blue: a closed surface that shows blue is oriented inwards there.
 #include <vtkActor.h>
 #include <vtkCamera.h>
+#include <vtkCoordinate.h>
+#include <vtkDataSet.h>
 #include <vtkDataSetMapper.h>
 #include <vtkExtractGeometry.h>
 #include <vtkNew.h>
+#include <vtkPLYReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkPlane.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkUnstructuredGrid.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
+#include <vector>
 
-int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: lsrecon-snapshot INPUT.vtu OUTPUT.png [--clip | --top]\n");
-    return 2;
-  }
-  const std::string input = argv[1];
-  const std::string output = argv[2];
-  const bool clip = argc > 3 && std::string(argv[3]) == "--clip";
-  const bool top = argc > 3 && std::string(argv[3]) == "--top";
-  if (!std::ifstream(input)) {
-    std::fprintf(stderr, "lsrecon-snapshot: cannot read %s\n", input.c_str());
-    return 1;
+namespace {
+
+struct View {
+  bool clip = false, top = false;
+};
+
+vtkSmartPointer<vtkDataSet> read(const std::string& path) {
+  if (path.size() > 4 && path.substr(path.size() - 4) == ".ply") {
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    return vtkSmartPointer<vtkDataSet>(reader->GetOutput());
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(input.c_str());
+  reader->SetFileName(path.c_str());
   reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
-  if (grid->GetNumberOfCells() == 0) {
-    std::fprintf(stderr, "lsrecon-snapshot: %s holds no cells\n", input.c_str());
-    return 1;
-  }
-  double b[6];
-  grid->GetBounds(b);
+  return vtkSmartPointer<vtkDataSet>(reader->GetOutput());
+}
 
+std::string label(const std::string& path) {
+  std::string name = path.substr(path.find_last_of('/') + 1);
+  return name.substr(0, name.find_last_of('.'));
+}
+
+void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& title, const View& v, double x0,
+              double y0, double x1, double y1) {
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetViewport(x0, y0, x1, y1);
+  renderer->SetBackground(1, 1, 1);
+  window->AddRenderer(renderer);
+  vtkNew<vtkTextActor> text;
+  text->SetInput(title.c_str());
+  text->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+  text->GetTextProperty()->SetFontSize(18);
+  text->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  text->SetPosition(0.03, 0.03);
+  renderer->AddActor2D(text);
+  if (data->GetNumberOfCells() == 0) return;  // an empty result: just its label
+  double b[6];
+  data->GetBounds(b);
   vtkNew<vtkDataSetMapper> mapper;
   vtkNew<vtkActor> actor;
-  if (clip) {
-    // Keep the cells behind the plane y = centre: the cut face shows the refinement.
+  if (v.clip) {
     vtkNew<vtkPlane> plane;
     plane->SetOrigin(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
     plane->SetNormal(0, -1, 0);
     vtkNew<vtkExtractGeometry> cut;
-    cut->SetInputData(grid);
+    cut->SetInputData(data);
     cut->SetImplicitFunction(plane);
     cut->ExtractInsideOn();
     cut->ExtractBoundaryCellsOn();
@@ -64,34 +89,79 @@ int main(int argc, char** argv) {
     actor->GetProperty()->SetEdgeVisibility(true);
     actor->GetProperty()->SetLineWidth(0.5);
   } else {
-    mapper->SetInputData(grid);
+    mapper->SetInputData(data);
   }
   mapper->ScalarVisibilityOff();
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.85, 0.75, 0.55);
+  vtkNew<vtkProperty> back;  // faces seen from behind (inward-oriented) show blue
+  back->SetColor(0.45, 0.6, 0.9);
+  actor->SetBackfaceProperty(back);
   const bool flat = b[5] - b[4] <= 1e-12 * std::max(b[1] - b[0], b[3] - b[2]);
-  if (flat) {  // 2D curves: dark, thick lines seen from above
+  if (flat) {
     actor->GetProperty()->SetColor(0.1, 0.2, 0.6);
     actor->GetProperty()->SetLineWidth(3.0);
     actor->GetProperty()->LightingOff();
   }
-
-  vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
-  renderer->SetBackground(1, 1, 1);
+  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (v.clip) {
+    camera->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
+    camera->SetViewUp(0, 0, 1);
+  } else if (!flat && !v.top) {
+    camera->Elevation(30);
+    camera->Azimuth(30);
+  }
+  renderer->ResetCamera();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  View v;
+  int columns = 0, width = 0, height = 0;
+  std::vector<std::string> inputs;
+  std::string output;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--clip") {
+      v.clip = true;
+    } else if (a == "--top") {
+      v.top = true;
+    } else if (a == "--columns" && i + 1 < argc) {
+      columns = std::atoi(argv[++i]);
+    } else if (a == "--size" && i + 2 < argc) {
+      width = std::atoi(argv[++i]);
+      height = std::atoi(argv[++i]);
+    } else if (output.empty()) {
+      output = a;
+    } else {
+      inputs.push_back(a);
+    }
+  }
+  if (output.empty() || inputs.empty()) {
+    std::fprintf(stderr, "usage: lsrecon-snapshot OUTPUT.png INPUT.{ply,vtu}... [--clip | --top] [--columns N] [--size W H]\n");
+    return 2;
+  }
+  for (const auto& in : inputs) {
+    if (!std::ifstream(in)) {
+      std::fprintf(stderr, "lsrecon-snapshot: cannot read %s\n", in.c_str());
+      return 1;
+    }
+  }
+  const int n = int(inputs.size());
+  if (columns <= 0) columns = std::min(n, 4);
+  const int rows = (n + columns - 1) / columns;
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
-  window->AddRenderer(renderer);
-  window->SetSize(1000, 800);
-  renderer->ResetCamera();
-  const bool oblique = !clip && !flat && !top;
-  renderer->GetActiveCamera()->Elevation(oblique ? 30 : 0);
-  renderer->GetActiveCamera()->Azimuth(oblique ? 30 : 0);
-  if (clip) renderer->GetActiveCamera()->SetViewUp(0, 0, 1);
-  if (clip) renderer->GetActiveCamera()->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
-  renderer->ResetCamera();
+  window->SetSize(width > 0 ? width : (n == 1 ? 1000 : 400 * columns), height > 0 ? height : (n == 1 ? 800 : 360 * rows));
+  for (int k = 0; k < n; ++k) {
+    const int r = k / columns, c = k % columns;
+    add_view(window, read(inputs[k]), label(inputs[k]), v, double(c) / columns, 1.0 - double(r + 1) / rows,
+             double(c + 1) / columns, 1.0 - double(r) / rows);
+  }
   window->Render();
-
   vtkNew<vtkWindowToImageFilter> image;
   image->SetInput(window);
   image->Update();

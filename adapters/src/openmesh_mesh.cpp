@@ -18,13 +18,13 @@ namespace lsr::adapters {
 
 TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals) {
   TriMesh mesh;
-  mesh.request_vertex_normals();
+  if (!normals.empty()) mesh.request_vertex_normals();  // none given: write none, not zeros
   std::vector<TriMesh::VertexHandle> handles;
   handles.reserve(surface.vertices.size());
   for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
     const Vec<3>& p = surface.vertices[i];
     handles.push_back(mesh.add_vertex(TriMesh::Point(float(p.x()), float(p.y()), float(p.z()))));
-    if (i < normals.size()) {
+    if (mesh.has_vertex_normals() && i < normals.size()) {
       mesh.set_normal(handles.back(), TriMesh::Normal(float(normals[i].x()), float(normals[i].y()), float(normals[i].z())));
     }
   }

@@ -17,7 +17,8 @@ namespace lsr::adapters {
 /// @brief OpenMesh's default triangle mesh (float points, vertex normals requested).
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
-/// @brief The surface with its per-vertex normals; face orientation is kept.
+/// @brief The surface with its per-vertex normals (none when normals is empty); face
+/// orientation is kept.
 TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals);
 
 /// @brief Vertices and triangles of an OpenMesh mesh.

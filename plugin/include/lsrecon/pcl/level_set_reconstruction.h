@@ -47,6 +47,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     double tolerance = 0.0;  ///< the stopping tolerance, cloud units
     int dimension = 0;       ///< 2 or 3, as used
     std::size_t skipped_points = 0;  ///< NaN / infinite points left out
+    std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
   };
 
   LevelSetReconstruction() { this->check_tree_ = false; }

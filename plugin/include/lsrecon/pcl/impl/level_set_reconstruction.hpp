@@ -105,6 +105,7 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       status_.iterations = r.iterations;
       status_.residual = r.residual;
       status_.tolerance = r.tolerance;
+      status_.residual_history = r.residual_history;
     };
     if (status_.dimension == 2) {
       lsr::Points<2> planar;
