@@ -5,14 +5,16 @@
 /// truth, normal consistency and topology. Writes results.md, results.csv, every mesh as PLY
 /// and, per case, lsrecon's convergence history.
 ///
-///   lsrecon-compare [--out DIR] [--cases a,b,..] [--methods a,b,..] [--points N]
-///                   [--noise S] [--holes F] [--nonuniform]
+///   lsrecon-compare [--out DIR] [--cases a,b,.. | --input FILE] [--methods a,b,..]
+///                   [--points N] [--noise S] [--holes F] [--nonuniform]
+/// --input compares on a user's cloud: time, memory and topology only (no ground truth).
 ///
 /// Each (case, method) runs in a child process (this program re-run with --run) so that its
 /// peak memory is its own.
 #include "compare_cases.h"
 #include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/nearest_point_index.h"
 #include "lsrecon/core/surface_distance.h"
 #include "lsrecon/core/surface_topology.h"
@@ -45,6 +47,7 @@ using Cloud = pcl::PointCloud<pcl::PointNormal>;
 
 struct Settings {
   std::string out = "compare-out";
+  std::string input;  ///< a user's cloud instead of the generated cases: no ground truth
   std::vector<std::string> cases = lsr::demos::case_names();
   std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson9", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
   int points = 20000;
@@ -239,8 +242,28 @@ double peak_mib() {
 }
 
 // Child: one case, one method; prints one CSV row.
+// A user's file: the points only. Without ground truth the distance columns stay empty.
+lsr::demos::CompareCase file_case(const std::string& path) {
+  lsr::demos::CompareCase c;
+  c.name = "file";
+  c.points = lsr::adapters::read_point_file(path).points;
+  Eigen::Vector3d lo = c.points.at(0), hi = c.points.at(0);
+  for (const auto& p : c.points) {
+    lo = lo.cwiseMin(Eigen::Vector3d(p));
+    hi = hi.cwiseMax(Eigen::Vector3d(p));
+  }
+  c.diagonal = (hi - lo).norm();
+  return c;
+}
+
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
-  const lsr::demos::CompareCase c = lsr::demos::make_case(case_name, s.points, s.noise, s.holes, s.nonuniform);
+  const lsr::demos::CompareCase c = s.input.empty()
+                                        ? lsr::demos::make_case(case_name, s.points, s.noise, s.holes, s.nonuniform)
+                                        : file_case(s.input);
+  if (method == "poisson8-true" && c.normals.empty()) {
+    std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
+    return 0;
+  }
   lsr::demos::Stopwatch clock;
   const Produced p = run_method(method, c);
   const double seconds = clock.lap();
@@ -249,7 +272,8 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   std::vector<std::array<lsr::Index, 3>> triangles;
   weld(p.mesh, c.diagonal, vertices, triangles);
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
-  const lsr::SurfaceDistances d = lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000);
+  const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
+                                        : lsr::SurfaceDistances{};
   // The welded mesh, without normals: PCL's marching cubes emit all-zero normals, which
   // renderers light black.
   lsr::LevelSetMesh<3> welded;
@@ -260,15 +284,22 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   std::string genus;
   for (int g : t.genus) genus += (genus.empty() ? "" : " ") + std::to_string(g);
   if (t.genus.size() > 4) genus = "(" + std::to_string(t.genus.size()) + " parts)";
-  std::printf("%s,%s,%zu,%.3f,%.0f,%.3e,%.3e,%.3f,%d,%d,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
-              c.points.size(), seconds, memory, d.chamfer / c.diagonal, d.hausdorff / c.diagonal, d.normal_consistency,
+  auto metric = [&](double v, const char* format) {
+    char text[32];
+    std::snprintf(text, sizeof text, format, v);
+    return c.sdf ? std::string(text) : std::string("n/a");
+  };
+  std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
+              c.points.size(), seconds, memory, metric(d.chamfer / c.diagonal, "%.3e").c_str(),
+              metric(d.hausdorff / c.diagonal, "%.3e").c_str(), metric(d.normal_consistency, "%.3f").c_str(),
               int(t.watertight), int(t.edge_manifold && t.vertex_manifold), t.components, genus.c_str(),
               triangles.size(), p.note.c_str());
   return 0;
 }
 
 std::string child_row(const char* self, const Settings& s, const std::string& case_name, const std::string& method) {
-  std::string command = std::string(self) + " --run " + case_name + " " + method + " --out '" + s.out + "' --points " +
+  std::string command = std::string(self) + " --run " + case_name + " " + method + " --out '" + s.out + "'" +
+                        (s.input.empty() ? "" : " --input '" + s.input + "'") + " --points " +
                         std::to_string(s.points) + " --noise " + std::to_string(s.noise) + " --holes " +
                         std::to_string(s.holes) + (s.nonuniform ? " --nonuniform" : "") + " 2>/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
@@ -322,6 +353,8 @@ int main(int argc, char** argv) {
       run_method_name = value();
     } else if (a == "--out") {
       s.out = value();
+    } else if (a == "--input") {
+      s.input = value();
     } else if (a == "--cases") {
       s.cases = split(value());
     } else if (a == "--methods") {
@@ -335,7 +368,7 @@ int main(int argc, char** argv) {
     } else if (a == "--nonuniform") {
       s.nonuniform = true;
     } else {
-      std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b] [--methods a,b] [--points N] "
+      std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b | --input FILE] [--methods a,b] [--points N] "
                            "[--noise S] [--holes F] [--nonuniform]\n  cases: sphere torus two-spheres dumbbell\n"
                            "  methods: lsrecon poisson8 poisson9 poisson8-true mc-hoppe mc-rbf gp3\n");
       return a == "--help" ? 0 : 2;
@@ -344,6 +377,7 @@ int main(int argc, char** argv) {
   try {
     if (!run_case.empty()) return run_one(s, run_case, run_method_name);
     std::filesystem::create_directories(s.out);
+    if (!s.input.empty()) s.cases = {"file"};
     std::vector<std::string> rows;
     for (const auto& c : s.cases) {
       for (const auto& m : s.methods) {

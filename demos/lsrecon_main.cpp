@@ -55,7 +55,7 @@ options (lengths are in the unit box the data is mapped into: its bounding ball 
   --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
   --smooth N                    N rounds of Laplace smoothing of the 3D result    (default 0)
   --threads N                   0 = all cores                                     (default 0)
-  --max-mesh-vertices N         refuse larger meshes                              (default 20000000)
+  --max-mesh-vertices N         refuse larger meshes; 0 = from the machine's memory (default 0)
   --points N                    points of a --demo cloud                          (default 20000)
   --report FILE.json            write figures of the run as JSON
   --quiet                       no progress on stderr
@@ -162,7 +162,7 @@ Cli parse(int argc, char** argv) {
     } else if (a == "--threads") {
       s.threads = int(number(a, v, 0, 1024));
     } else if (a == "--max-mesh-vertices") {
-      s.max_vertices = lsr::Index(number(a, v, 1000, 2e9));
+      s.max_vertices = lsr::Index(number(a, v, 0, 2e9));
     } else if (a == "--points") {
       c.points = int(number(a, v, 4, 5e7));
     } else if (a == "--report") {

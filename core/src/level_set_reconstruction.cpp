@@ -11,6 +11,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -137,6 +139,15 @@ double automatic_curvature_weight(double h_min, double noise) {
   return (0.3 + 4.0 * std::min(1.0, noise / h_min)) * h_min * h_min;
 }
 
+// Vertices whose solve fits in 70% of the physical memory (peak bytes per vertex measured by
+// the solver benchmark, rounded up).
+template <int D>
+Index memory_limited_vertices() {
+  const double bytes = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  const double per_vertex = D == 3 ? 3500.0 : 2000.0;
+  return Index(std::clamp(0.7 * bytes / per_vertex, 1e5, 2e9));
+}
+
 void check_options(const ReconstructionOptions& o) {
   auto bad = [](const std::string& what, const std::string& hint) { throw InvalidInput(what, hint); };
   if (!(o.h_min >= 0.0 && o.h_min < 1.0)) bad("h_min must be in [0, 1)", "use 0 (automatic) or e.g. 1/128");
@@ -147,6 +158,7 @@ void check_options(const ReconstructionOptions& o) {
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
+  if (o.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from the machine's memory)");
   if (!(o.solver_tolerance > 0.0 && o.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
   if (o.initial_front == InitialFront::enclosing && o.alpha < 0.0) {
     bad("alpha < 0 makes a front that encloses the data grow away from it",
@@ -282,7 +294,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   mo.h_min = r.h_min;
   mo.h_max = std::max(o.h_max, r.h_min);
   mo.grading = o.grading;
-  mo.max_vertices = o.max_vertices;
+  mo.max_vertices = o.max_vertices > 0 ? o.max_vertices : memory_limited_vertices<D>();
   mo.threads = o.threads;
   AdaptiveMesh<D> adaptive;
   try {

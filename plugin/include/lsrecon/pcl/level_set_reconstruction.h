@@ -88,7 +88,8 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// point has the same z, else 3.
   void setDimension(int dimension) { dimension_ = dimension; }
   int getDimension() const { return dimension_; }
-  /// @brief Refuse meshes predicted to need more vertices (default 20 million).
+  /// @brief Refuse meshes predicted to need more vertices (default 0: what fits in 70% of the
+  /// machine's memory, about 4.8 million in 3D with 24 GiB).
   void setMaxMeshVertices(int n) { options_.max_vertices = n; }
   int getMaxMeshVertices() const { return options_.max_vertices; }
   /// @brief Threads for the distance queries (default 0: all cores).
