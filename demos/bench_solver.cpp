@@ -41,15 +41,6 @@ const std::vector<Case>& cases() {
 
 const double kPi = std::acos(-1.0);
 
-lsr::Points<2> star(int n, lsr::Vec<2> c, double radius) {
-  lsr::Points<2> p;
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * kPi * i / n;
-    p.push_back(c + radius * (1 + 0.3 * std::cos(5 * t)) * lsr::Vec<2>(std::cos(t), std::sin(t)));
-  }
-  return p;
-}
-
 double peak_rss_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -87,17 +78,17 @@ void run_case(const Case& c) {
     const lsr::Torus t{lsr::Vec<3>(0, 0, 0), 1.0, 0.4};
     run<3>(c, t.sample(c.points), [&](const lsr::Vec<3>& p) { return t.signed_distance(p); });
   } else if (c.name == "star-2d") {
-    const lsr::Points<2> truth = star(200000, lsr::Vec<2>(0, 0), 1.0);
+    const lsr::Points<2> truth = lsr::sample_star(200000, lsr::Vec<2>(0, 0), 1.0);
     const lsr::NearestPointIndex<2> index(truth);
-    run<2>(c, star(c.points, lsr::Vec<2>(0, 0), 1.0), [&](const lsr::Vec<2>& p) { return index.distance(p); });
+    run<2>(c, lsr::sample_star(c.points, lsr::Vec<2>(0, 0), 1.0), [&](const lsr::Vec<2>& p) { return index.distance(p); });
   } else if (c.name == "three-shapes-2d") {
     lsr::Points<2> data = lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}.sample(c.points / 3);
     for (const auto& p : lsr::Circle{lsr::Vec<2>(0.6, 0.8), 0.5}.sample(c.points / 3)) data.push_back(p);
-    lsr::Points<2> s = star(c.points / 3, lsr::Vec<2>(0.6, -0.9), 0.5);
+    lsr::Points<2> s = lsr::sample_star(c.points / 3, lsr::Vec<2>(0.6, -0.9), 0.5);
     data.insert(data.end(), s.begin(), s.end());
     lsr::Points<2> truth = lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}.sample(100000);
     for (const auto& p : lsr::Circle{lsr::Vec<2>(0.6, 0.8), 0.5}.sample(100000)) truth.push_back(p);
-    for (const auto& p : star(100000, lsr::Vec<2>(0.6, -0.9), 0.5)) truth.push_back(p);
+    for (const auto& p : lsr::sample_star(100000, lsr::Vec<2>(0.6, -0.9), 0.5)) truth.push_back(p);
     const lsr::NearestPointIndex<2> index(truth);
     run<2>(c, data, [&](const lsr::Vec<2>& p) { return index.distance(p); });
   } else {

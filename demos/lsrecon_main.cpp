@@ -94,15 +94,6 @@ double number(const std::string& flag, const char* text, double lo, double hi) {
   return v;
 }
 
-std::string extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 bool is_2d_shape(const std::string& s) { return s == "star" || s == "three-shapes"; }
 bool is_curve_output(const std::string& ext) { return ext == "svg" || ext == "txt"; }
 bool is_mesh_output(const std::string& ext) { return ext == "ply" || ext == "obj" || ext == "off" || ext == "stl"; }
@@ -180,7 +171,7 @@ Cli parse(int argc, char** argv) {
   if (!c.demo.empty() && c.demo != "torus" && c.demo != "sphere" && c.demo != "two-spheres" && !is_2d_shape(c.demo)) {
     usage_error("--demo must be torus, sphere, two-spheres, star or three-shapes, got '" + c.demo + "'");
   }
-  const std::string out = extension(c.output);
+  const std::string out = lsr::adapters::file_extension(c.output);
   if (!is_curve_output(out) && !is_mesh_output(out)) {
     usage_error("cannot write '" + c.output + "': use .ply .obj .off .stl (3D) or .svg .txt (2D)");
   }
@@ -189,15 +180,6 @@ Cli parse(int argc, char** argv) {
 }
 
 const double kPi = std::acos(-1.0);
-
-lsr::Points<2> star(int n, lsr::Vec<2> center, double radius) {
-  lsr::Points<2> p;
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * kPi * i / n;
-    p.push_back(center + radius * (1 + 0.3 * std::cos(5 * t)) * lsr::Vec<2>(std::cos(t), std::sin(t)));
-  }
-  return p;
-}
 
 // The input as 3D points and its dimension.
 struct Input {
@@ -211,11 +193,11 @@ Input generate(const Cli& c) {
   if (is_2d_shape(c.demo)) {
     lsr::Points<2> p;
     if (c.demo == "star") {
-      p = star(c.points, lsr::Vec<2>(0, 0), 1.0);
+      p = lsr::sample_star(c.points, lsr::Vec<2>(0, 0), 1.0);
     } else {
       p = lsr::Circle{lsr::Vec<2>(-1.2, 0), 0.5}.sample(c.points / 3);
       for (const auto& q : lsr::Circle{lsr::Vec<2>(0.6, 0.8), 0.5}.sample(c.points / 3)) p.push_back(q);
-      for (const auto& q : star(c.points - 2 * (c.points / 3), lsr::Vec<2>(0.6, -0.9), 0.5)) p.push_back(q);
+      for (const auto& q : lsr::sample_star(c.points - 2 * (c.points / 3), lsr::Vec<2>(0.6, -0.9), 0.5)) p.push_back(q);
     }
     for (const auto& q : p) in.points.emplace_back(q.x(), q.y(), 0.0);
     in.dim = 2;
@@ -234,7 +216,7 @@ Input generate(const Cli& c) {
 
 Input read_input(const Cli& c) {
   Input in;
-  const std::string ext = extension(c.input);
+  const std::string ext = lsr::adapters::file_extension(c.input);
   if (ext == "pgm" || ext == "ppm" || ext == "pnm" || ext == "png") {
     for (const auto& p : lsr::demos::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
     in.dim = 2;
@@ -338,7 +320,7 @@ int run(const Cli& c) {
   Input in = c.demo.empty() ? read_input(c) : generate(c);
   const double read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
-  const std::string out_ext = extension(c.output);
+  const std::string out_ext = lsr::adapters::file_extension(c.output);
   if (in.dim == 2 && is_mesh_output(out_ext)) {
     throw lsr::InvalidInput("the input is planar (2D), so the result is curves, not a mesh",
                             "write .svg or .txt, or pass --dim 3 for a flat 3D shape");

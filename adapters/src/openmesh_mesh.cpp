@@ -2,6 +2,8 @@
 /// @file openmesh_mesh.cpp
 #include "lsrecon/adapters/openmesh_mesh.h"
 
+#include "lsrecon/adapters/point_files.h"
+
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/errors.h"
 
@@ -48,8 +50,7 @@ LevelSetMesh<3> from_openmesh(const TriMesh& mesh) {
 }
 
 void write_mesh_file(const TriMesh& mesh, const std::string& path) {
-  std::string ext = path.substr(std::min(path.size(), path.find_last_of('.') + 1));
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = file_extension(path);
   if (ext != "ply" && ext != "obj" && ext != "off" && ext != "stl") {
     throw Error("cannot write a mesh to '" + path + "'", "use an output ending in .ply, .obj, .off or .stl");
   }

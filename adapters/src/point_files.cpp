@@ -16,9 +16,8 @@
 #include <sstream>
 
 namespace lsr::adapters {
-namespace {
 
-std::string extension(const std::string& path) {
+std::string file_extension(const std::string& path) {
   const std::size_t dot = path.find_last_of('.');
   const std::size_t slash = path.find_last_of('/');
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
@@ -26,6 +25,8 @@ std::string extension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
+
+namespace {
 
 PointFile read_text(const std::string& path) {
   std::ifstream in(path);
@@ -85,7 +86,7 @@ template <class Load>
 PointFile read_pcl(const std::string& path, Load load) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path and the file's permissions");
-  const bool pcd = path.size() > 4 && (path.substr(path.size() - 4) == ".pcd" || path.substr(path.size() - 4) == ".PCD");
+  const bool pcd = file_extension(path) == "pcd";
   if ((pcd && !plausible_pcd(path)) || load(path, cloud) < 0) {
     throw Error("cannot read the point cloud in " + path, "the file is corrupt or not a PCD / PLY point cloud");
   }
@@ -99,7 +100,7 @@ PointFile read_pcl(const std::string& path, Load load) {
 }  // namespace
 
 PointFile read_point_file(const std::string& path) {
-  const std::string ext = extension(path);
+  const std::string ext = file_extension(path);
   if (ext == "xyz" || ext == "txt" || ext == "xy" || ext == "pts") return read_text(path);
   if (ext == "pcd") {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPCDFile(p, c); });

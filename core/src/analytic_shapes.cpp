@@ -19,6 +19,16 @@ Points<2> Circle::sample(int n) const {
   return pts;
 }
 
+Points<2> sample_star(int n, const Vec<2>& center, double radius) {
+  Points<2> pts;
+  pts.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * kPi * i / n;
+    pts.push_back(center + radius * (1.0 + 0.3 * std::cos(5.0 * t)) * Vec<2>(std::cos(t), std::sin(t)));
+  }
+  return pts;
+}
+
 Points<3> Sphere::sample(int n) const {
   Points<3> pts;
   pts.reserve(n);

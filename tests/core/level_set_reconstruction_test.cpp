@@ -21,16 +21,8 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-// r(t) = R (1 + a cos 5t): five concave valleys.
-Points<2> star(int n, Vec<2> center = Vec<2>(0, 0), double radius = 1.0) {
-  Points<2> p;
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * kPi * i / n;
-    const double r = radius * (1 + 0.3 * std::cos(5 * t));
-    p.push_back(center + r * Vec<2>(std::cos(t), std::sin(t)));
-  }
-  return p;
-}
+// r(t) = R (1 + 0.3 cos 5t): five concave valleys.
+Points<2> star(int n, Vec<2> center = Vec<2>(0, 0), double radius = 1.0) { return sample_star(n, center, radius); }
 
 template <int D>
 double max_distance(const Points<D>& from, const NearestPointIndex<D>& to) {

@@ -17,6 +17,9 @@ struct PointFile {
   bool planar_text = false;        ///< a text file with two columns: 2D data
 };
 
+/// @brief The lower-case extension of a path without the dot ("" when it has none).
+std::string file_extension(const std::string& path);
+
 /// @brief Reads the points of a file, choosing the reader by extension.
 /// @throw lsr::Error for a missing, unreadable or corrupt file or an unknown extension; the
 /// message names the file, the line where relevant, and the accepted formats.

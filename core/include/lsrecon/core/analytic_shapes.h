@@ -38,6 +38,10 @@ struct Torus {
   Points<3> sample(int n) const;
 };
 
+/// @brief n points, evenly spaced in angle, on the star r(t) = radius (1 + 0.3 cos 5t): five
+/// concave valleys (no closed-form signed distance; measure against a dense sample).
+Points<2> sample_star(int n, const Vec<2>& center, double radius);
+
 /// @brief Signed distance of a union of shapes: the minimum of their signed distances (exact
 /// outside the shapes and for disjoint shapes).
 template <class Shape, int D>
