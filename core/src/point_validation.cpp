@@ -7,13 +7,6 @@
 namespace lsr {
 
 template <int D>
-std::size_t count_non_finite(const Points<D>& points) {
-  std::size_t bad = 0;
-  for (const auto& p : points) bad += p.allFinite() ? 0 : 1;
-  return bad;
-}
-
-template <int D>
 Points<D> drop_non_finite(const Points<D>& points) {
   Points<D> kept;
   kept.reserve(points.size());
@@ -36,8 +29,6 @@ void require_valid_points(const Points<D>& points, const std::string& what) {
   }
 }
 
-template std::size_t count_non_finite<2>(const Points<2>&);
-template std::size_t count_non_finite<3>(const Points<3>&);
 template Points<2> drop_non_finite<2>(const Points<2>&);
 template Points<3> drop_non_finite<3>(const Points<3>&);
 template void require_valid_points<2>(const Points<2>&, const std::string&);

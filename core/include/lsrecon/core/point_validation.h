@@ -9,10 +9,6 @@
 
 namespace lsr {
 
-/// @brief Number of points with a NaN or infinite coordinate.
-template <int D>
-std::size_t count_non_finite(const Points<D>& points);
-
 /// @brief Copy of points without those that have a NaN or infinite coordinate.
 template <int D>
 Points<D> drop_non_finite(const Points<D>& points);
