@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file compare_cases.h
-/// @brief The generated test clouds of lsrecon-compare, with their ground truth: signed
-/// distance, true normals and a dense sample of the true surface.
+/// @brief The clouds of lsrecon-compare and the benchmarks: random samples of the test shapes
+/// (core/shape_corpus.h) with their ground truth.
 #pragma once
 
-#include "lsrecon/core/types.h"
+#include "lsrecon/core/shape_corpus.h"
 
 #include <functional>
 #include <string>
@@ -17,15 +17,14 @@ struct CompareCase {
   Points<3> points;        ///< what the methods see (noisy when asked)
   Points<3> normals;       ///< true outward normals at the clean positions
   std::function<double(const Vec<3>&)> sdf;  ///< the true surface's signed distance
-  Points<3> truth;         ///< a dense sample of the true surface
+  Points<3> truth;         ///< a dense clean sample of the true surface
   double diagonal = 1.0;   ///< bounding-box diagonal of the truth
+  std::vector<int> genus;  ///< the true topology, per component
 };
 
-/// @brief sphere, torus, two-spheres or dumbbell (two balls joined by a thin bar: a thin part
-/// and concave joins). noise: Gaussian deviation relative to the diagonal; holes: fraction of
-/// the points removed in a few caps; nonuniform: density varies 10x across the shape.
+/// @brief points i.i.d. samples of the test shape `name` with the given variant.
 /// @throw lsr::InvalidInput for an unknown name.
-CompareCase make_case(const std::string& name, int points, double noise, double holes, bool nonuniform);
+CompareCase make_case(const std::string& name, int points, const SamplingVariant& variant);
 
 /// @brief The names make_case() knows.
 std::vector<std::string> case_names();

@@ -6,7 +6,7 @@
 /// and, per case, lsrecon's convergence history.
 ///
 ///   lsrecon-compare [--out DIR] [--cases a,b,.. | --input FILE] [--methods a,b,..]
-///                   [--points N] [--noise S] [--holes F] [--nonuniform]
+///                   [--points N] [--noise S] [--holes N] [--density-ratio R]
 /// --input compares on a user's cloud: time, memory and topology only (no ground truth).
 ///
 /// Each (case, method) runs in a child process (this program re-run with --run) so that its
@@ -21,6 +21,7 @@
 #include "lsrecon/pcl/level_set_reconstruction.h"
 #include "stopwatch.h"
 
+#include <pcl/common/io.h>
 #include <pcl/features/normal_3d_omp.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/surface/gp3.h>
@@ -49,10 +50,9 @@ struct Settings {
   std::string out = "compare-out";
   std::string input;  ///< a user's cloud instead of the generated cases: no ground truth
   std::vector<std::string> cases = lsr::demos::case_names();
-  std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson9", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
+  std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson8-lsrecon", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
   int points = 20000;
-  double noise = 0.0, holes = 0.0;
-  bool nonuniform = false;
+  lsr::SamplingVariant variant;
 };
 
 const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
@@ -148,13 +148,25 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c)
   Produced out;
   pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  if (method == "lsrecon") {
+  if (method == "lsrecon" || method == "poisson8-lsrecon") {
     pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
     ls.setInputCloud(xyz);
     ls.reconstruct(out.mesh);
-    out.note = ls.getStatus().converged ? "converged" : "not converged";
+    out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
+               std::to_string(ls.getStatus().iterations) + " steps";
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
+    if (method == "lsrecon") return out;
+    // Poisson given lsrecon's oriented normals of the input points.
+    Cloud::Ptr cloud(new Cloud);
+    pcl::concatenateFields(*xyz, ls.getInputNormals(), *cloud);
+    pcl::Poisson<pcl::PointNormal> poisson;
+    poisson.setDepth(8);
+    poisson.setInputCloud(cloud);
+    out.mesh = pcl::PolygonMesh();
+    poisson.reconstruct(out.mesh);
+    out.note = "lsrecon's normals (" + out.note + ")";
+    out.residuals.clear();
     return out;
   }
   Cloud::Ptr cloud(new Cloud(method == "poisson8-true" ? with_true_normals(c) : with_estimated_normals(xyz)));
@@ -200,7 +212,7 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c)
     out.note = "radius 5% of diagonal";
   } else {
     throw lsr::InvalidInput("unknown method '" + method + "'",
-                            "use lsrecon, poisson8, poisson9, poisson8-true, mc-hoppe, mc-rbf or gp3");
+                            "use lsrecon, poisson8, poisson9, poisson8-lsrecon, poisson8-true, mc-hoppe, mc-rbf or gp3");
   }
   return out;
 }
@@ -258,7 +270,7 @@ lsr::demos::CompareCase file_case(const std::string& path) {
 
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
-                                        ? lsr::demos::make_case(case_name, s.points, s.noise, s.holes, s.nonuniform)
+                                        ? lsr::demos::make_case(case_name, s.points, s.variant)
                                         : file_case(s.input);
   if (method == "poisson8-true" && c.normals.empty()) {
     std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
@@ -300,8 +312,9 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
 std::string child_row(const char* self, const Settings& s, const std::string& case_name, const std::string& method) {
   std::string command = std::string(self) + " --run " + case_name + " " + method + " --out '" + s.out + "'" +
                         (s.input.empty() ? "" : " --input '" + s.input + "'") + " --points " +
-                        std::to_string(s.points) + " --noise " + std::to_string(s.noise) + " --holes " +
-                        std::to_string(s.holes) + (s.nonuniform ? " --nonuniform" : "") + " 2>/dev/null";
+                        std::to_string(s.points) + " --noise " + std::to_string(s.variant.noise) + " --holes " +
+                        std::to_string(s.variant.holes) + " --density-ratio " + std::to_string(s.variant.density_ratio) +
+                        " 2>/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   std::string row;
   char buffer[4096];
@@ -329,8 +342,9 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
     }
     md << '\n';
   }
-  md << "\nPoints per case: " << s.points << ", noise " << s.noise << " x diagonal, holes " << s.holes
-     << (s.nonuniform ? ", nonuniform density" : "") << ". Seconds include normal estimation for the methods "
+  md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
+     << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
+     << s.variant.density_ratio << ". Seconds include normal estimation for the methods "
      << "that need normals (PCA of 16 neighbours, oriented away from the centroid).\n";
 }
 
@@ -362,15 +376,15 @@ int main(int argc, char** argv) {
     } else if (a == "--points") {
       s.points = std::atoi(value().c_str());
     } else if (a == "--noise") {
-      s.noise = std::atof(value().c_str());
+      s.variant.noise = std::atof(value().c_str());
     } else if (a == "--holes") {
-      s.holes = std::atof(value().c_str());
-    } else if (a == "--nonuniform") {
-      s.nonuniform = true;
+      s.variant.holes = std::atoi(value().c_str());
+    } else if (a == "--density-ratio") {
+      s.variant.density_ratio = std::atof(value().c_str());
     } else {
       std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b | --input FILE] [--methods a,b] [--points N] "
-                           "[--noise S] [--holes F] [--nonuniform]\n  cases: sphere torus two-spheres dumbbell\n"
-                           "  methods: lsrecon poisson8 poisson9 poisson8-true mc-hoppe mc-rbf gp3\n");
+                           "[--noise S] [--holes N] [--density-ratio R]\n  cases: sphere torus double-torus triple-torus trefoil linked-rings cup limb two-spheres\n"
+                           "  methods: lsrecon poisson8 poisson9 poisson8-lsrecon poisson8-true mc-hoppe mc-rbf gp3\n");
       return a == "--help" ? 0 : 2;
     }
   }

@@ -83,6 +83,15 @@ Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first) {
   return c;
 }
 
+// The size most of the data asks for: what the size predictions assume (h_min alone would
+// over-predict a mesh whose sizes follow a coarser local sampling).
+double typical_size(const AdaptiveMeshOptions& o) {
+  if (o.point_size.empty()) return o.h_min;
+  std::vector<double> s = o.point_size;
+  std::nth_element(s.begin(), s.begin() + s.size() / 10, s.end());
+  return std::max(o.h_min, s[s.size() / 10]);
+}
+
 }  // namespace
 
 void validate(const AdaptiveMeshOptions& o) {
@@ -107,9 +116,16 @@ template <int D>
 AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
                                     const AdaptiveMeshOptions& o, const Progress& progress) {
   validate(o);
-  const double resolution = 1.0 / o.h_min;
+  if (!o.point_size.empty() && o.point_size.size() != data.points().size()) {
+    throw InvalidInput("point_size has " + std::to_string(o.point_size.size()) + " entries for " +
+                           std::to_string(data.points().size()) + " points",
+                       "pass one size per data point, or none");
+  }
+  AdaptiveMeshOptions predicted = o;
+  predicted.h_min = typical_size(o);
+  const double resolution = 1.0 / predicted.h_min;
   const double limit = double(o.max_vertices);
-  const double lower_bound = occupied_cells<D>(data.points(), o.h_min);
+  const double lower_bound = occupied_cells<D>(data.points(), predicted.h_min);
   if (lower_bound > limit) {
     throw MeshTooLarge("a mesh at resolution " + std::to_string(int(resolution)) + " needs over " +
                            std::to_string(std::int64_t(lower_bound)) + " vertices (limit " +
@@ -131,9 +147,10 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   const double expected_passes = std::max(1.0, std::ceil(D * std::log2(1.0 / (cells * o.h_min))));
   Candidates<D> cand = leaves_from(forest, 0);
   std::vector<double> dist;
+  std::vector<Index> nearest;
   while (!cand.nodes.empty()) {
     progress.update("mesh", std::min(1.0, passes / expected_passes));
-    data.query(cand.centroids, dist, nullptr, o.threads);
+    data.query(cand.centroids, dist, &nearest, o.threads);
     const Index first_new = Index(forest.simplices().size());
     const Index vertices_before = Index(forest.vertices().size());
     double largest_marked = 0.0;
@@ -141,7 +158,8 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
       const double size = forest.size(cand.nodes[i]);
       const double dist_lower = std::max(0.0, dist[i] - cand.radii[i]);
-      if (size > o.h_max || (size > o.h_min && size > o.grading * dist_lower)) {
+      const double local = o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[i]]);
+      if (size > o.h_max || (size > local && size > o.grading * dist_lower)) {
         marked.push_back(cand.nodes[i]);
         largest_marked = std::max(largest_marked, size);
       }
@@ -154,7 +172,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
 
     check_predicted_size<D>(double(forest.vertices().size()),
                             double(forest.vertices().size()) - vertices_before,
-                            largest_marked / std::pow(2.0, 1.0 / D), o);
+                            largest_marked / std::pow(2.0, 1.0 / D), predicted);
     cand = leaves_from(forest, first_new);
   }
   AdaptiveMesh<D> out = leaf_mesh(std::move(forest));

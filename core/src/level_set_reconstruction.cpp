@@ -4,7 +4,10 @@
 /// renormalise, stopping test) -> extraction of the best iterate -> back to input coordinates.
 #include "lsrecon/core/level_set_reconstruction.h"
 
+#include "lsrecon/core/local_sampling.h"
+#include "lsrecon/core/outside_flood_fill.h"
 #include "lsrecon/core/point_location.h"
+#include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/point_validation.h"
 #include "lsrecon/core/renormalization.h"
 #include "lsrecon/core/unit_box_transform.h"
@@ -69,74 +72,24 @@ void require_spanning(const Points<D>& points) {
   }
 }
 
-// Median distance from a point to its nearest other point (duplicates skipped).
+// The local scale l_i = max(s_i, 1.5 noise_i): what the sampling resolves, but not the noise
+// (finer than the noise makes islands; measured: 5 loops on a noisy circle). Every length of
+// the solver is a multiple of it.
 template <int D>
-double median_spacing(const NearestPointIndex<D>& index) {
-  const Points<D>& p = index.points();
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / 20000);  // a sample suffices
-  Points<D> queries;
-  for (std::size_t i = 0; i < p.size(); i += stride) queries.push_back(p[i]);
-  std::vector<Index> nearest;
-  const int k = 8;
-  index.query_k(queries, k, nearest);
-  std::vector<double> spacing;
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    for (int j = 0; j < k; ++j) {
-      const double s = (p[nearest[q * k + j]] - queries[q]).norm();
-      if (s > 0.0) {
-        spacing.push_back(s);
-        break;
-      }
-    }
-  }
-  if (spacing.empty()) return 0.0;
-  std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-  return spacing[spacing.size() / 2];
+std::vector<double> local_scales(const LocalSampling<D>& s) {
+  std::vector<double> l(s.spacing.size());
+  for (std::size_t i = 0; i < l.size(); ++i) l[i] = std::max({s.spacing[i], 1.5 * s.noise[i], 1e-9});
+  return l;
 }
 
-// Median thickness of the data across the curve / surface: sqrt of the smallest eigenvalue
-// of the covariance of each point's k nearest neighbours. Clean samples give their sagitta
-// (tiny), Gaussian noise of deviation sigma gives about sigma.
+// Mesh size near each point: its scale, clamped to what 2 cores handle, or the size asked for.
 template <int D>
-double noise_level(const NearestPointIndex<D>& index) {
-  const Points<D>& p = index.points();
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / 5000);
-  Points<D> queries;
-  for (std::size_t i = 0; i < p.size(); i += stride) queries.push_back(p[i]);
-  const int k = 16;
-  std::vector<Index> nearest;
-  index.query_k(queries, k, nearest);
-  std::vector<double> thickness;
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    Vec<D> mean = Vec<D>::Zero();
-    for (int j = 0; j < k; ++j) mean += p[nearest[q * k + j]];
-    mean /= double(k);
-    Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
-    for (int j = 0; j < k; ++j) {
-      const Vec<D> e = p[nearest[q * k + j]] - mean;
-      cov += e * e.transpose() / double(k);
-    }
-    thickness.push_back(std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>>(cov).eigenvalues()[0])));
-  }
-  std::nth_element(thickness.begin(), thickness.begin() + thickness.size() / 2, thickness.end());
-  return thickness[thickness.size() / 2];
-}
-
-// The mesh resolves what the sampling resolves, but not the noise: finer than the spacing only
-// lets the front sag between samples, finer than the noise makes islands (measured: 5 loops
-// on a noisy circle). Clamped to what 2 cores handle in seconds.
-template <int D>
-double automatic_h_min(double spacing, double noise) {
+std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fixed) {
   const double lo = D == 2 ? 1.0 / 4096 : 1.0 / 512;
   const double hi = D == 2 ? 1.0 / 64 : 1.0 / 32;
-  return std::clamp(std::max(spacing, 1.5 * noise), lo, hi);
-}
-
-// beta = 0.3 h^2 keeps concavities within 0.15 h of the data (DESIGN.md section 9). Noise makes
-// bumps of height sigma and width ~2h; flattening them needs beta kappa >= alpha sigma, i.e.
-// beta ~ 2 |alpha| h^2: the weight grows towards that as sigma approaches h.
-double automatic_curvature_weight(double h_min, double noise) {
-  return (0.3 + 4.0 * std::min(1.0, noise / h_min)) * h_min * h_min;
+  std::vector<double> h(scale.size());
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] = fixed > 0.0 ? fixed : std::clamp(scale[i], lo, hi);
+  return h;
 }
 
 // Vertices whose solve fits in 70% of the physical memory (peak bytes per vertex measured by
@@ -153,14 +106,22 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.h_min >= 0.0 && o.h_min < 1.0)) bad("h_min must be in [0, 1)", "use 0 (automatic) or e.g. 1/128");
   if (!std::isfinite(o.alpha)) bad("alpha is not finite", "use 0 (automatic), 2 or -2");
   if (!std::isfinite(o.curvature_weight)) bad("curvature_weight is not finite", "use -1 (automatic)");
-  if (!(o.time_step >= 0.0 && o.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (10 h_min)");
-  if (!(o.tolerance >= 0.0 && o.tolerance < 1.0)) bad("tolerance must be in [0, 1)", "use 0 (h_min)");
+  if (!(o.time_step >= 0.0 && o.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (automatic: 0.2 / |alpha|)");
+  if (!(o.tolerance >= 0.0 && o.tolerance < 1.0)) bad("tolerance must be in [0, 1)", "use 0 (automatic: tolerance_factor local spacings)");
+  auto factor = [&](double v, const char* name, double lo, double hi, const char* use) {
+    if (!(v > lo && v <= hi)) bad(std::string(name) + " must be in (" + std::to_string(lo) + ", " + std::to_string(hi) + "]", use);
+  };
+  factor(o.gap_factor, "gap_factor", 0.0, 20.0, "use 2 (local spacings)");
+  factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 1.5 (local spacings)");
+  factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local spacings)");
+  factor(o.curvature_factor, "curvature_factor", -1e-300, 100.0, "use 0.25");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
+  if (!(o.unreached_fraction >= 0.0 && o.unreached_fraction < 1.0)) bad("unreached_fraction must be in [0, 1)", "use 0.01");
   if (o.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from the machine's memory)");
   if (!(o.solver_tolerance > 0.0 && o.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
-  if (o.initial_front == InitialFront::enclosing && o.alpha < 0.0) {
+  if (o.initial_front != InitialFront::inside && o.alpha < 0.0) {
     bad("alpha < 0 makes a front that encloses the data grow away from it",
         "use alpha > 0 (e.g. 2) with the enclosing start, or start inside");
   }
@@ -190,58 +151,70 @@ Eigen::VectorXd initial_field(const SimplexMesh<D>& mesh, const NearestPointInde
   return u;
 }
 
-// Mesh vertices near each data point: those within `radius` whose nearest data point it is
-// (its Voronoi cell, cut at the radius). CSR: vertices of point i at [offsets[i], offsets[i+1]).
+// Mesh vertices each data point holds once reached: those whose nearest data point it is (its
+// Voronoi cell), within pin_factor s of it. A vertex path that avoids every such ball crosses
+// the surface only through an empty disc wider than pin_factor s, which a random sample of
+// 2e5 points leaves with probability ~ N exp(-6 pin_factor^2) (local_sampling.h).
+// CSR: vertices of point i at [offsets[i], offsets[i+1]).
 struct VertexCells {
   std::vector<Index> offsets, vertices;
 };
 
-VertexCells near_vertex_cells(std::size_t points, const std::vector<double>& d,
-                              const std::vector<Index>& nearest, double radius) {
+VertexCells pin_cells(const Eigen::VectorXd& scale, std::size_t points, const std::vector<double>& d,
+                      const std::vector<Index>& nearest, double pin_factor) {
+  std::vector<char> in(d.size(), 0);
+  for (std::size_t v = 0; v < d.size(); ++v) in[v] = d[v] <= pin_factor * scale[v];
   VertexCells c;
   c.offsets.assign(points + 1, 0);
-  for (std::size_t v = 0; v < d.size(); ++v) {
-    if (d[v] <= radius) ++c.offsets[nearest[v] + 1];
-  }
+  for (std::size_t v = 0; v < d.size(); ++v) c.offsets[nearest[v] + 1] += in[v];
   for (std::size_t i = 0; i < points; ++i) c.offsets[i + 1] += c.offsets[i];
   c.vertices.resize(c.offsets[points]);
   std::vector<Index> fill(c.offsets.begin(), c.offsets.end() - 1);
   for (std::size_t v = 0; v < d.size(); ++v) {
-    if (d[v] <= radius) c.vertices[fill[nearest[v]]++] = Index(v);
+    if (in[v]) c.vertices[fill[nearest[v]]++] = Index(v);
   }
   return c;
 }
 
 // A data point counts as reached once the moving front is within `reach` of it (u rises to 0
 // at the data when alpha > 0, falls to 0 when alpha < 0); its cell then stops moving.
+// Pinned cells stop moving: d := 0 there and the vertices are held.
 template <int D>
 void pin_reached_data(const std::vector<Location<D>>& at, const VertexCells& cells,
-                      const Eigen::VectorXd& u, double alpha, double reach,
-                      std::vector<char>& pinned, Eigen::VectorXd& d) {
+                      const Eigen::VectorXd& u, double alpha, const std::vector<double>& reach,
+                      std::vector<char>& pinned, Eigen::VectorXd& d, std::vector<char>& held) {
+  auto hold = [&](Index vertex) {
+    d[vertex] = 0.0;
+    held[vertex] = 1;
+  };
   for (std::size_t i = 0; i < at.size(); ++i) {
     if (pinned[i]) continue;
     const double v = interpolate(at[i], u);
-    if ((alpha > 0.0 ? v : -v) >= -reach) {
+    if ((alpha > 0.0 ? v : -v) >= -reach[i]) {
       pinned[i] = 1;
-      for (Index vertex : at[i].vertices) d[vertex] = 0.0;
-      for (Index k = cells.offsets[i]; k < cells.offsets[i + 1]; ++k) d[cells.vertices[k]] = 0.0;
+      for (Index vertex : at[i].vertices) hold(vertex);
+      for (Index k = cells.offsets[i]; k < cells.offsets[i + 1]; ++k) hold(cells.vertices[k]);
     }
   }
 }
 
+// Per point |u(x_i)| / eps_i: the data side of the stopping test, in units of the tolerance.
 template <int D>
-double max_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd& u) {
-  double worst = 0.0;
-  for (const auto& loc : at) worst = std::max(worst, std::abs(interpolate(loc, u)));
-  return worst;
+std::vector<double> data_residuals(const std::vector<Location<D>>& at, const Eigen::VectorXd& u, const std::vector<double>& eps) {
+  std::vector<double> r(at.size());
+  for (std::size_t i = 0; i < at.size(); ++i) r[i] = std::abs(interpolate(at[i], u)) / eps[i];
+  return r;
 }
 
-// Largest distance from the front to the data (d interpolated along the front's source edges):
-// the other side of the stopping test, which sees pieces of front far from every data point.
+// Largest distance from the front to the data relative to the local tolerance there (both
+// interpolated along the front's source edges): the other side of the stopping test, which
+// sees pieces of front far from every data point.
 template <int D>
-double max_front_distance(const LevelSetMesh<D>& front, const Eigen::VectorXd& d) {
+double max_front_distance(const LevelSetMesh<D>& front, const Eigen::VectorXd& d, const Eigen::VectorXd& tolerance) {
   double worst = 0.0;
-  for (const EdgePoint& e : front.sources) worst = std::max(worst, (1.0 - e.t) * d[e.a] + e.t * d[e.b]);
+  for (const EdgePoint& e : front.sources) {
+    worst = std::max(worst, ((1.0 - e.t) * d[e.a] + e.t * d[e.b]) / ((1.0 - e.t) * tolerance[e.a] + e.t * tolerance[e.b]));
+  }
   return worst;
 }
 
@@ -254,9 +227,26 @@ double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd&
   return values[values.size() / 2];
 }
 
+// u0 for the tagged start: the signed distance to the boundary of the vertices reachable from
+// the walls while staying farther than gap_factor local spacings from the data. Empty when
+// nothing is reachable (data against the walls) or nothing is left inside.
 template <int D>
-void attach_output(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
-                   const Eigen::VectorXd& u, double level, const UnitBoxTransform<D>& box) {
+Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const Eigen::VectorXd& distance, const Eigen::VectorXd& spacing,
+                             double gap_factor, int threads) {
+  std::vector<char> passable(mesh.vertices.size());
+  for (std::size_t v = 0; v < passable.size(); ++v) passable[v] = distance[v] > gap_factor * spacing[v];
+  const std::vector<char> outside = flood_from_walls(mesh, passable);
+  Eigen::VectorXd u(Eigen::Index(outside.size()));
+  for (std::size_t v = 0; v < outside.size(); ++v) u[v] = outside[v] ? 1.0 : -1.0;
+  if (u.minCoeff() > 0.0 || u.maxCoeff() < 0.0) return {};
+  renormalize(mesh, u, Eigen::VectorXd::Ones(u.size()), std::numeric_limits<double>::infinity(), threads);
+  return u;
+}
+
+// The front's own surface (no fit): the level `level` of u, normals from grad u.
+template <int D>
+void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
+                  const Eigen::VectorXd& u, double level) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
   r.surface = extract_zero_level_set(mesh, values);
@@ -266,11 +256,51 @@ void attach_output(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const
     const EdgePoint& e = r.surface.sources[i];
     const Vec<D> n = (1.0 - e.t) * g.template segment<D>(D * e.a) + e.t * g.template segment<D>(D * e.b);
     r.normals[i] = n.norm() > 0.0 ? Vec<D>(n.normalized()) : Vec<D>::Zero();
-    r.surface.vertices[i] = box.from_unit(r.surface.vertices[i]);
   }
-  if constexpr (D == 2) r.loops = closed_loops(r.surface);
 }
 
+// PCA normals turned to agree with grad u at each point: outward wherever the front found the
+// right side, which the topology of the front decides, not a centroid or a viewpoint.
+template <int D>
+Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location<D>>& at, const Eigen::VectorXd& gradient) {
+  Points<D> n = s.normals;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    Vec<D> g = Vec<D>::Zero();
+    for (int k = 0; k <= D; ++k) g += at[i].weights[k] * gradient.template segment<D>(D * at[i].vertices[k]);
+    if (n[i].dot(g) < 0.0) n[i] = -n[i];
+  }
+  return n;
+}
+
+// The fitted surface: F replaces u on the band of vertices within band_factor local spacings of
+// the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
+// the front's topology decides everything the fit does not reach. Output vertices are then
+// projected onto F itself, which removes the P1 interpolation error of the extraction.
+template <int D>
+void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
+                const Eigen::VectorXd& u, const Eigen::VectorXd& spacing, double trust_factor, int threads) {
+  constexpr double band_factor = 3.0;
+  std::vector<double> values(u.data(), u.data() + u.size());
+  Points<D> band;
+  std::vector<Index> band_vertices;
+  for (Eigen::Index v = 0; v < u.size(); ++v) {
+    if (std::abs(u[v]) < band_factor * spacing[v]) {
+      band.push_back(mesh.vertices[v]);
+      band_vertices.push_back(Index(v));
+    }
+  }
+  std::vector<double> f;
+  fit.evaluate(band, f, nullptr, threads);
+  // The settled front lies within gap_factor spacings of the data: a fit that disagrees with its
+  // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
+  for (std::size_t k = 0; k < band.size(); ++k) {
+    const Index v = band_vertices[k];
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * spacing[v];
+    values[v] = trusted ? f[k] : u[v];
+  }
+  r.surface = extract_zero_level_set(mesh, values);
+  r.normals = fit.project(r.surface.vertices, threads);
+}
 
 template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
@@ -280,6 +310,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   StageClock clock(r.seconds);
   const Progress progress(callback);
   r.input_points = input.size();
+  std::vector<std::size_t> kept;  // input index of each valid point
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (input[i].allFinite()) kept.push_back(i);
+  }
   const Points<D> points = drop_non_finite(input);
   r.skipped_points = input.size() - points.size();
   require_spanning(points);
@@ -287,43 +321,59 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const NearestPointIndex<D> data(box.to_unit(points));
   clock.end("normalize");
 
-  const double spacing = median_spacing(data);
-  r.noise = noise_level(data);
-  r.h_min = o.h_min > 0.0 ? o.h_min : automatic_h_min<D>(spacing, r.noise);
+  progress.update("sampling", -1.0);
+  const LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);
+  r.noise = median(sampling.noise);
+  r.spacing = median(sampling.spacing);
+  const std::vector<double> point_scale = local_scales(sampling);
+  clock.end("sampling");
+
   AdaptiveMeshOptions mo;
-  mo.h_min = r.h_min;
-  mo.h_max = std::max(o.h_max, r.h_min);
+  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min);
+  mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
+  mo.h_max = std::max(o.h_max, mo.h_min);
   mo.grading = o.grading;
   mo.max_vertices = o.max_vertices > 0 ? o.max_vertices : memory_limited_vertices<D>();
   mo.threads = o.threads;
-  AdaptiveMesh<D> adaptive;
-  try {
-    adaptive = build_adaptive_mesh(data, mo, progress);
-  } catch (const Cancelled&) {
-    r.status = ReconstructionStatus::cancelled;
-    return r;
-  }
+  r.h_min = mo.h_min;
+  const AdaptiveMesh<D> adaptive = build_adaptive_mesh(data, mo, progress);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());
   clock.end("mesh");
 
+  progress.update("distance", -1.0);
   std::vector<double> dist;
   std::vector<Index> nearest;
   data.query(mesh.vertices, dist, &nearest, o.threads);
-  const VertexCells cells = near_vertex_cells(data.points().size(), dist, nearest, 2.0 * r.h_min);
+  const std::size_t nv = mesh.vertices.size();
+  // Per-vertex scales l and noise: those of the nearest data point.
+  Eigen::VectorXd spacing(nv), noise(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    spacing[v] = point_scale[nearest[v]];
+    noise[v] = sampling.noise[nearest[v]];
+  }
   const Eigen::VectorXd distance = Eigen::Map<const Eigen::VectorXd>(dist.data(), Eigen::Index(dist.size()));
+  const VertexCells cells = pin_cells(spacing, data.points().size(), dist, nearest, o.pin_factor);
   Eigen::VectorXd d = distance;  // what drives the front: zero where it is pinned
   const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
   clock.end("distance");
 
+  progress.update("setup", -1.0);
   const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh),
                                                    o.solver == LinearSolver::gmres_reference);
   StepParameters step;
-  step.alpha = o.alpha != 0.0 ? o.alpha : (o.initial_front == InitialFront::enclosing ? 2.0 : -2.0);
+  step.alpha = o.alpha != 0.0 ? o.alpha : (o.initial_front == InitialFront::inside ? -2.0 : 2.0);
   step.time_step = o.time_step > 0.0 ? o.time_step : 0.2 / std::abs(step.alpha);
-  step.curvature_weight =
-      o.curvature_weight >= 0.0 ? o.curvature_weight : automatic_curvature_weight(r.h_min, r.noise);
+  if (o.curvature_weight >= 0.0) {
+    step.curvature_weight = o.curvature_weight;
+  } else {
+    // Noise makes bumps of height sigma and width ~2 s; flattening them needs beta kappa >=
+    // alpha sigma, i.e. beta ~ 2 |alpha| s^2: the weight grows towards that as sigma nears s.
+    step.curvature_weights = std::abs(step.alpha) * spacing.cwiseProduct(spacing).cwiseProduct(
+        (o.curvature_factor + 2.0 * noise.cwiseQuotient(spacing).cwiseMin(1.0).array()).matrix());
+    step.curvature_weight = std::abs(step.alpha) * o.curvature_factor * r.spacing * r.spacing;
+  }
   step.solver_tolerance = o.solver_tolerance;
   step.solver = o.solver;
   const int interval = o.renormalization_interval > 0
@@ -332,30 +382,41 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.time_step = step.time_step;
   r.alpha = step.alpha;
   r.curvature_weight = step.curvature_weight;
-  const double eps = o.tolerance > 0.0 ? o.tolerance : r.h_min;
-  r.tolerance = eps / box.scale();
-  Eigen::VectorXd u(mesh.vertices.size());
+  // Tolerances: eps_i at the data, and between samples eps + the largest gap (gap_factor s).
+  std::vector<double> eps(data.points().size()), reach(eps.size());
+  for (std::size_t i = 0; i < eps.size(); ++i) {
+    eps[i] = o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * point_scale[i];
+    reach[i] = 0.5 * eps[i];
+  }
+  const double median_eps = median(eps);
+  r.tolerance = median_eps / box.scale();
+  const Eigen::VectorXd front_tolerance =
+      (o.tolerance > 0.0 ? Eigen::VectorXd::Constant(Eigen::Index(nv), o.tolerance) : Eigen::VectorXd(o.tolerance_factor * spacing)) +
+      o.gap_factor * spacing;
+  Eigen::VectorXd u(nv);
   if (custom_start) {
-    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
-    }
+    for (std::size_t i = 0; i < nv; ++i) u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
     if (!u.allFinite() || u.minCoeff() >= 0.0 || u.maxCoeff() < 0.0) {
       throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
+  } else if (o.initial_front == InitialFront::tagged) {
+    u = tagged_start(mesh, distance, spacing, o.gap_factor, o.threads);
+    r.tagged_start = u.size() > 0;
+    if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
   } else {
     u = initial_field(mesh, data, o.initial_front, r.h_min);
   }
   clock.end("setup");
 
-  // Between samples the front may sit half a sample spacing away from the data.
-  const double front_tolerance = eps + 0.5 * spacing;
   double front_distance = std::numeric_limits<double>::infinity();
-  std::vector<char> pinned(at.size(), 0);
+  std::vector<char> pinned(at.size(), 0), held(nv, 0);
+  step.held = &held;
   double first_residual = std::numeric_limits<double>::infinity();
   double progress_fraction = 0.0;
   Eigen::VectorXd best = u;
   double best_residual = std::numeric_limits<double>::infinity();
+  bool best_front_ok = false;
   // Renormalise every vertex: a band of a few h_min is thinner than the coarse simplices the
   // front crosses early on, and clamping there flattens u over whole simplices and stalls the
   // front (measured). The exact distance everywhere costs one k-NN query per vertex.
@@ -367,45 +428,91 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       u = semi_implicit_step(ops, d, u, step, &solve);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
-      if (o.pin_reached_data) pin_reached_data(at, cells, u, step.alpha, 0.5 * eps, pinned, d);
+      if (o.pin_reached_data) pin_reached_data(at, cells, u, step.alpha, reach, pinned, d, held);
       if (n % interval == 0) {
-        front_distance = max_front_distance(renormalize(mesh, u, ops.gradient_norms(u), band, o.threads).front, distance);
+        // Against the driving d: a piece of front held by pinned cells has settled, and what
+        // it spans is the resolution limit, not a reason to go on.
+        front_distance = max_front_distance(renormalize(mesh, u, ops.gradient_norms(u), band, o.threads).front,
+                                            d, front_tolerance);
         clock.end("renormalize");
       }
-      const double data_residual = max_on_data(at, u);
-      // Converged when every data point is within eps of the front and the front within
-      // front_tolerance of the data; the residual is the worse of the two, in units of eps.
-      const double residual = std::max(data_residual, front_distance * eps / front_tolerance);
-      r.residual_history.push_back(residual / box.scale());
+      const std::vector<double> per_point = data_residuals(at, u, eps);
+      const double data_residual = *std::max_element(per_point.begin(), per_point.end());
+      // Converged when every data point is within its eps of the front and the front within
+      // its tolerance of the data; the residual is the worse of the two, in tolerances.
+      const double residual = std::max(data_residual, front_distance);
+      r.residual_history.push_back(residual * median_eps / box.scale());
       // The data side falls geometrically (the front side can drop at once when a bubble
-      // vanishes): progress is the fraction of log(first / eps) it has covered, never receding.
+      // vanishes): progress is the fraction of log(first) it has covered, never receding.
       if (!std::isfinite(first_residual)) first_residual = data_residual;
-      if (first_residual > eps) {
-        progress_fraction = std::max(progress_fraction, std::clamp(std::log(first_residual / std::max(data_residual, eps)) /
-                                                                       std::log(first_residual / eps), 0.0, 1.0));
+      if (first_residual > 1.0) {
+        progress_fraction = std::max(progress_fraction, std::clamp(std::log(first_residual / std::max(data_residual, 1.0)) /
+                                                                       std::log(first_residual), 0.0, 1.0));
       }
       r.iterations = n;
       if (residual < best_residual) {
         best_residual = residual;
         best = u;
         r.best_iteration = n;
+        r.unreached_points = std::size_t(std::count_if(per_point.begin(), per_point.end(), [](double x) { return x > 1.0; }));
+        best_front_ok = front_distance <= 1.0;
       }
       clock.end("stopping test");
-      if (best_residual <= eps) {
+      if (best_residual <= 1.0) {
         r.status = ReconstructionStatus::converged;
         break;
       }
-      if (n - r.best_iteration >= o.patience) break;
+      if (n - r.best_iteration >= o.patience) {
+        // Stalled: the front no longer gets closer to the last points. Curvature holds it short
+        // of the tip of a sharp concave crease, pinned cells short of a slit between close
+        // sheets; the fit places the surface there. A few such points do not make the run fail.
+        if (best_front_ok && double(r.unreached_points) <= o.unreached_fraction * double(at.size())) {
+          r.status = ReconstructionStatus::converged;
+        }
+        break;
+      }
     }
   } catch (const Cancelled&) {
     r.status = ReconstructionStatus::cancelled;
   }
-  r.residual = best_residual / box.scale();
+  r.residual = best_residual * median_eps / box.scale();
   r.noise /= box.scale();
-  r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-  attach_output(r, mesh, ops, best, r.output_level * box.scale(), box);
-  clock.end("extract");
+  r.spacing /= box.scale();
+  if (r.iterations > 0 || custom_start) {
+    // The best iterate as a signed distance: the fit band and the normals need one.
+    renormalize(mesh, best, ops.gradient_norms(best), band, o.threads);
+    clock.end("renormalize");
+  }
+  const Eigen::VectorXd gradient = ops.gradient * best;
+  const Points<D> normals = oriented_normals(sampling, at, gradient);
+  r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
+  for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
+  if (o.fit_surface) {
+    const QuadricImplicit<D> fit(data, normals, point_scale, o.threads);
+    attach_fit(r, mesh, fit, best, spacing, o.gap_factor, o.threads);
+    clock.end("fit");
+  } else {
+    r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
+    attach_front(r, mesh, ops, best, r.output_level * box.scale());
+    clock.end("extract");
+  }
+  for (auto& x : r.surface.vertices) x = box.from_unit(x);
+  if constexpr (D == 2) r.loops = closed_loops(r.surface);
   return r;
+}
+
+// Cancellation outside the time loop (which keeps its best iterate) leaves an empty result.
+template <int D>
+ReconstructionResult<D> cancellable_pipeline(const Points<D>& input, const ReconstructionOptions& o,
+                                             const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
+  try {
+    return run_pipeline<D>(input, o, callback, custom_start);
+  } catch (const Cancelled&) {
+    ReconstructionResult<D> r;
+    r.status = ReconstructionStatus::cancelled;
+    r.input_points = input.size();
+    return r;
+  }
 }
 
 }  // namespace
@@ -413,7 +520,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 template <int D>
 ReconstructionResult<D> reconstruct(const Points<D>& points, const ReconstructionOptions& options,
                                     const ProgressCallback& progress) {
-  return run_pipeline<D>(points, options, progress, nullptr);
+  return cancellable_pipeline<D>(points, options, progress, nullptr);
 }
 
 template <int D>
@@ -425,7 +532,7 @@ ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDi
   }
   ReconstructionOptions o = options;
   o.initial_front = options.alpha > 0.0 ? InitialFront::enclosing : InitialFront::inside;
-  return run_pipeline<D>(points, o, progress, &initial);
+  return cancellable_pipeline<D>(points, o, progress, &initial);
 }
 
 template ReconstructionResult<2> reconstruct_from<2>(const Points<2>&, const SignedDistance<2>&,

@@ -105,10 +105,11 @@ Eigen::VectorXd P1Operators<D>::curvature(const Eigen::VectorXd& u, double eps_a
 
 template <int D>
 SymmetricCurvatureOperator<D>::SymmetricCurvatureOperator(const P1Operators<D>& ops,
-                                                          const Eigen::VectorXd& a)
+                                                          const Eigen::VectorXd& a,
+                                                          const Eigen::VectorXd* scale)
     : ops_(ops), weights_(D * a.size()) {
   for (Eigen::Index j = 0; j < a.size(); ++j) {
-    weights_.template segment<D>(D * j).setConstant(ops.ball_measure[j] / a[j]);
+    weights_.template segment<D>(D * j).setConstant(ops.ball_measure[j] / a[j] * (scale ? (*scale)[j] : 1.0));
   }
 }
 

@@ -9,10 +9,13 @@
 namespace lsr {
 namespace {
 
+// 1 on the vertices the solve updates, 0 on the walls and the held vertices.
 template <int D>
-Eigen::VectorXd wall_mask(const P1Operators<D>& ops) {
+Eigen::VectorXd wall_mask(const P1Operators<D>& ops, const StepParameters& p) {
   Eigen::VectorXd interior(ops.on_boundary.size());
-  for (std::size_t i = 0; i < ops.on_boundary.size(); ++i) interior[i] = ops.on_boundary[i] ? 0.0 : 1.0;
+  for (std::size_t i = 0; i < ops.on_boundary.size(); ++i) {
+    interior[i] = ops.on_boundary[i] || (p.held && (*p.held)[i]) ? 0.0 : 1.0;
+  }
   return interior;
 }
 
@@ -26,10 +29,11 @@ template <int D>
 Eigen::VectorXd step_cg(const P1Operators<D>& ops, const Eigen::VectorXd& d,
                         const Eigen::VectorXd& u, const Eigen::VectorXd& a,
                         const StepParameters& p, SolverReport* report) {
-  const Eigen::VectorXd interior = wall_mask(ops);
+  const Eigen::VectorXd interior = wall_mask(ops, p);
   const Eigen::VectorXd lambda_over_a = ops.ball_measure.cwiseQuotient(a);
-  const SymmetricCurvatureOperator<D> curvature(ops, a);
-  const double c = p.time_step * p.curvature_weight;
+  const bool per_vertex = p.curvature_weights.size() > 0;
+  const SymmetricCurvatureOperator<D> curvature(ops, a, per_vertex ? &p.curvature_weights : nullptr);
+  const double c = p.time_step * (per_vertex ? 1.0 : p.curvature_weight);
   auto apply = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
     Eigen::VectorXd out = lambda_over_a.cwiseProduct(v);
     if (c > 0.0) out += c * curvature.apply(v);
@@ -69,9 +73,9 @@ Eigen::VectorXd step_gmres(const P1Operators<D>& ops, const Eigen::VectorXd& d,
   const SparseRowMatrix m = ops.divergence * inverse_a.asDiagonal() * ops.gradient;
   // Rows scaled by -dt beta a_i; wall rows by 0, so that they become identity rows below.
   Eigen::VectorXd row_scale = -p.time_step * p.curvature_weight * a;
-  for (Eigen::Index i = 0; i < row_scale.size(); ++i) {
-    if (ops.on_boundary[i]) row_scale[i] = 0.0;
-  }
+  if (p.curvature_weights.size() > 0) row_scale = -p.time_step * p.curvature_weights.cwiseProduct(a);
+  const Eigen::VectorXd interior = wall_mask(ops, p);
+  row_scale = row_scale.cwiseProduct(interior);
   SparseRowMatrix system = row_scale.asDiagonal() * m;
   SparseRowMatrix identity(u.size(), u.size());
   identity.setIdentity();

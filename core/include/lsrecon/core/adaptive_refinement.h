@@ -21,7 +21,10 @@ namespace lsr {
 struct AdaptiveMeshOptions {
   double h_min = 1.0 / 128;  ///< finest size, reached on the data; in (0, 1). Resolution = 1/h_min
   double h_max = 1.0 / 8;    ///< coarsest size anywhere; in [h_min, 1]
-  /// Grading c: a simplex is refined while size > max(h_min, c * dist(simplex, data)), with
+  /// Optional size per data point (#N, unit box): near point i the mesh stops refining at
+  /// max(h_min, point_size[i]) instead of h_min, so that it follows the local sampling.
+  std::vector<double> point_size;
+  /// Grading c: a simplex is refined while size > max(h_local, c * dist(simplex, data)), with
   /// dist bounded below by d(centroid) - circumradius. Smaller c widens the fine band around
   /// the data. The default 2 keeps simplices of size h_min within about 2.7 h_min of the data
   /// and a sphere mesh at 2.8% of the uniform one at h_min = 1/256. In (0, 100].

@@ -5,8 +5,9 @@
 ///
 /// The front evolves by du/dt = |grad u| (beta kappa(u) + alpha d(x)). The paper's curvature
 /// weight beta = 1 bridges concavities: they stall beta |kappa| / alpha outside the data
-/// (DESIGN.md section 9). The default beta = 0.3 h_min^2 keeps that stall below 0.15 h_min for
-/// features down to h_min; README.md lists the other measured departures from the paper.
+/// (DESIGN.md section 9). Every length here follows the local sampling of the data (see
+/// ReconstructionOptions); the front finds the topology, and a fit through the data places the
+/// surface. README.md lists the measured departures from the paper.
 #pragma once
 
 #include "lsrecon/core/adaptive_refinement.h"
@@ -23,43 +24,74 @@ namespace lsr {
 
 /// @brief Where the front starts.
 enum class InitialFront {
+  /// The boundary of the region reachable from the box walls without coming closer to the data
+  /// than gap_factor local spacings (outside_flood_fill.h); alpha > 0. It already has the
+  /// topology the sampling resolves, and the front only closes the last gap (default).
+  tagged,
   enclosing,  ///< a circle / sphere around all the data; alpha > 0 (the front shrinks)
   inside,     ///< a circle / sphere around the data's centroid, inside the shape; alpha < 0
 };
 
 /// @brief Parameters. Lengths are relative to the unit box the data is mapped into (the data's
 /// bounding ball becomes a ball of radius 0.4); 0 means "choose from the data".
+///
+/// Local scales (local_sampling.h): s_i is the sampling spacing at data point i, and a mesh
+/// vertex takes the s of its nearest data point. From s: the mesh size near the data
+/// (max(s, 1.5 noise)), the tagging distance and the front's tolerance between samples
+/// (gap_factor s), the radius over which a reached point holds the front (pin_factor s), the
+/// curvature weight (beta = |alpha| curvature_factor s^2) and the stopping tolerance
+/// (tolerance_factor s). A front spanning a gap of radius r between samples is held there
+/// when beta (D - 1) / r >= alpha d ~ alpha r, i.e. r <= sqrt((D - 1) curvature_factor) s;
+/// beyond, only the pinned cells of radius pin_factor s hold it.
 struct ReconstructionOptions {
-  /// Finest mesh size; 0: the median spacing of the data or 1.5 times its estimated noise,
-  /// whichever is larger, clamped to [1/4096, 1/64] (2D) or [1/512, 1/32] (3D).
+  /// Finest mesh size; 0: local, max(s_i, 1.5 noise_i) near each point, clamped to
+  /// [1/4096, 1/64] (2D) or [1/512, 1/32] (3D). > 0: this size everywhere near the data.
   double h_min = 0.0;
   double h_max = 1.0 / 8;     ///< coarsest mesh size
   double grading = 2.0;       ///< see AdaptiveMeshOptions::grading
-  double alpha = 0.0;         ///< attraction weight; 0: +2 enclosing, -2 inside
-  /// beta >= 0, the smoothness knob; negative: (0.3 + 4 min(1, noise / h_min)) h_min^2.
+  double alpha = 0.0;         ///< attraction weight; 0: +2 from outside, -2 inside
+  /// beta >= 0 everywhere, the smoothness knob; negative: local, |alpha| curvature_factor s^2,
+  /// growing to |alpha| (curvature_factor + 2) s^2 as the local noise approaches s.
   double curvature_weight = -1.0;
+  double curvature_factor = 0.25;  ///< see curvature_weight
+  /// The largest sampling gap, in local spacings: the tagged start keeps this far from the data,
+  /// and the front may lie this far from the data between samples. A random surface sample's
+  /// largest empty disc is about 1.45 s at 2e5 points (local_sampling.h); 2 leaves a margin.
+  double gap_factor = 2.0;
+  double pin_factor = 2.0;  ///< radius (in local spacings) of the cell a reached point pins
   /// dt; 0: 0.2 / |alpha|. The front closes in on the data like exp(-alpha t), and the
   /// explicit data term's CFL limit on the graded mesh (sizes ~ c d) is about c / alpha, so dt
-  /// is a fraction of 1/alpha, independent of h_min. The paper's 10 h_min equals it at
-  /// h_min = 1/100; at h_min = 1/2000 it needed 1000+ steps where this needs 58 (measured).
+  /// is a fraction of 1/alpha, independent of h_min.
   double time_step = 0.0;
-  double tolerance = 0.0;     ///< eps of the stopping test max |u(x)| <= eps; 0: h_min
+  /// eps of the stopping test |u(x_i)| <= eps_i at every data point; 0: tolerance_factor s_i.
+  double tolerance = 0.0;
+  /// See tolerance. The fit places the surface; the front only has to come within its trust
+  /// zone (gap_factor s) of every point, and 1 s is reachable in concave creases.
+  double tolerance_factor = 1.0;
   int max_iterations = 1000;
   /// Renormalise every k steps; 0: as rarely as keeps |alpha| dt k <= 0.4, which is 2 at the
   /// default dt (half the dominant cost, same accuracy on sphere, torus and star) and 1 for
   /// large steps (at |alpha| dt = 0.78, k = 2 left islands; measured).
   int renormalization_interval = 0;
   int patience = 5;  ///< stop after this many steps without a better residual (noisy data)
-  /// Pin the front at data points it has reached (d := 0 on the vertices of their simplices).
-  /// The unsigned d never stops a front that reaches the data, and its P1 interpolant is O(h)
-  /// at the data points, so converged parts pass through the data while slower parts (holes,
-  /// concavities) still travel; pinning holds them (measured: the torus needs it).
+  /// A run whose front stalled (patience ran out) with at most this fraction of the points
+  /// beyond their tolerance, and the front within its tolerance of the data everywhere,
+  /// counts as converged; ReconstructionResult::unreached_points says how many.
+  double unreached_fraction = 0.01;
+  /// Pin the front at data points it has reached (d := 0 on the vertices of their simplices
+  /// and of their cells of radius pin_factor s, and those vertices held still: curvature would
+  /// otherwise go on shrinking thin parts). The unsigned d never stops a front that
+  /// reaches the data, and its P1 interpolant is O(h) at the data points, so converged parts
+  /// would pass through the data while slower parts (holes, concavities) still travel.
   bool pin_reached_data = true;
-  /// Extract the level set through the data, {u = median of u at the data points}, instead of
-  /// {u = 0}. The front stops as soon as every point is within eps, so {u = 0} lies up to eps
-  /// off the data on the side it came from; the median level removes that bias.
+  /// Place the surface by a fit through the data once the front has settled: PCA normals
+  /// oriented by grad u, local quadrics blended on the band around the front
+  /// (quadric_implicit.h), output vertices projected onto the fit. Off: the front itself.
+  bool fit_surface = true;
+  /// Without fit_surface: extract {u = median of u at the data points} instead of {u = 0}
+  /// (the front stops up to eps off the data on the side it came from).
   bool level_through_data = true;
-  InitialFront initial_front = InitialFront::enclosing;
+  InitialFront initial_front = InitialFront::tagged;
   LinearSolver solver = LinearSolver::conjugate_gradient;
   double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
   /// Refuse (lsr::MeshTooLarge) meshes predicted to need more vertices; 0: what fits in 70% of
@@ -70,7 +102,7 @@ struct ReconstructionOptions {
 };
 
 enum class ReconstructionStatus {
-  converged,      ///< max |u| on the data fell to the tolerance
+  converged,      ///< data and front within tolerance (up to unreached_fraction of stalled points)
   not_converged,  ///< stopped by patience or max_iterations; the best iterate is returned
   cancelled,      ///< the progress callback asked to stop; the best iterate so far, if any
 };
@@ -84,11 +116,22 @@ struct ReconstructionResult {
   std::vector<std::vector<Index>> loops;  ///< 2D only: closed loops in order
   int iterations = 0;               ///< time steps taken
   int best_iteration = 0;           ///< the step whose u is returned
-  double residual = 0.0;            ///< max |u| on the data at best_iteration, input units
-  double tolerance = 0.0;           ///< the stopping tolerance, input units
-  double output_level = 0.0;        ///< the level of u extracted (0 or the median on the data), input units
+  /// Worst distance between data and front at best_iteration relative to its local tolerance,
+  /// times `tolerance`: input units, and converged exactly when residual <= tolerance.
+  double residual = 0.0;
+  double tolerance = 0.0;           ///< the median stopping tolerance, input units
+  /// Points farther than their tolerance from the front at best_iteration. A converged run may
+  /// leave up to unreached_fraction of the points where the front stalled (tips of sharp
+  /// concave creases, slits between close sheets); the fit places the surface there.
+  std::size_t unreached_points = 0;
+  double output_level = 0.0;        ///< without fit_surface: the level of u extracted, input units
+  /// #input points: outward unit normal of each input point (PCA of its neighbours, oriented
+  /// by grad u); NaN for skipped points. Feed these to normal-based methods such as Poisson.
+  Points<D> point_normals;
+  double spacing = 0.0;             ///< median local sampling spacing, input units
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units
   double h_min = 0.0;               ///< the finest mesh size used, unit box
+  bool tagged_start = false;        ///< the start was the tagged front (else a circle / sphere)
   double noise = 0.0;               ///< estimated noise deviation of the data, input units
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;

@@ -54,7 +54,9 @@ template <int D>
 class SymmetricCurvatureOperator {
  public:
   /// @param a #V: the frozen |grad u^n|, already bounded below by eps_a.
-  SymmetricCurvatureOperator(const P1Operators<D>& ops, const Eigen::VectorXd& a);
+  /// @param scale #V factors on W (a per-vertex curvature weight), or nullptr for none.
+  SymmetricCurvatureOperator(const P1Operators<D>& ops, const Eigen::VectorXd& a,
+                             const Eigen::VectorXd* scale = nullptr);
 
   /// @brief G^T W G v.
   Eigen::VectorXd apply(const Eigen::VectorXd& v) const;

@@ -27,6 +27,13 @@ struct StepParameters {
   double time_step = 0.0;         ///< dt > 0
   double alpha = 2.0;             ///< weight of the attraction alpha d(x)
   double curvature_weight = 1.0;  ///< beta >= 0, weight of the curvature
+  /// #V: beta per vertex, replacing curvature_weight when not empty. Applied inside the
+  /// divergence in the symmetric form (div(beta grad u / |grad u|)), which differs from
+  /// beta kappa by grad beta . n: small where beta follows a slowly varying sampling scale.
+  Eigen::VectorXd curvature_weights;
+  /// #V flags, or nullptr: vertices advanced by the data term only, like the walls (a front
+  /// pinned on the data, where d = 0, is held still, and curvature no longer shrinks it).
+  const std::vector<char>* held = nullptr;
   double min_gradient = 1e-2;     ///< eps_a: |grad u| is bounded below by it
   double solver_tolerance = 1e-8; ///< relative residual of the linear solve
   int max_solver_iterations = 2000;

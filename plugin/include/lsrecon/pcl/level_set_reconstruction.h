@@ -15,6 +15,7 @@
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include <pcl/PolygonMesh.h>
+#include <pcl/point_types.h>
 #include <pcl/point_cloud.h>
 #include <pcl/surface/reconstruction.h>
 
@@ -25,7 +26,9 @@ namespace pcl {
 
 /// @brief Level-set reconstruction (Claisse & Frey 2011) as a pcl::SurfaceReconstruction.
 ///
-/// Needs no normals: a front evolves from a sphere around the data onto it. Lengths passed to
+/// Needs no normals: a front evolves from outside onto the data, then a fit through the data
+/// places the surface; the consistently oriented normals of the input come out as a by-product
+/// (getInputNormals()). Lengths passed to
 /// setters are relative to the unit box the cloud is mapped into (its bounding ball becomes a
 /// ball of radius 0.4); the output is in the cloud's coordinates. Points with NaN or infinite
 /// coordinates are skipped. On bad input the class logs PCL_ERROR and leaves the output empty.
@@ -52,8 +55,8 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
 
   LevelSetReconstruction() { this->check_tree_ = false; }
 
-  /// @brief Resolution 1/h_min in the unit box; 0 (default) chooses it from the data spacing
-  /// and noise. Typical: 64 to 512 in 3D.
+  /// @brief Resolution 1/h_min in the unit box, the same everywhere near the data; 0 (default)
+  /// follows the local sampling spacing and noise. Typical: 64 to 512 in 3D.
   void setResolution(double resolution) { options_.h_min = resolution > 0 ? 1.0 / resolution : 0.0; }
   double getResolution() const { return options_.h_min > 0 ? 1.0 / options_.h_min : 0.0; }
   /// @brief Coarsest mesh size in the unit box (default 1/8).
@@ -66,7 +69,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   void setAlpha(double alpha) { options_.alpha = alpha; }
   double getAlpha() const { return options_.alpha; }
   /// @brief Curvature (smoothness) weight beta, unit box length^2 (default -1: automatic,
-  /// 0.3 h_min^2 on clean data, more with noise).
+  /// from the local sampling spacing and noise; see lsr::ReconstructionOptions).
   void setCurvatureWeight(double beta) { options_.curvature_weight = beta; }
   double getCurvatureWeight() const { return options_.curvature_weight; }
   /// @brief Time step in unit-box time (default 0: 0.2 / |alpha|).
@@ -75,13 +78,14 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// @brief Time steps at most (default 1000).
   void setMaxIterations(int n) { options_.max_iterations = n; }
   int getMaxIterations() const { return options_.max_iterations; }
-  /// @brief Stopping tolerance in the unit box (default 0: h_min).
+  /// @brief Stopping tolerance in the unit box (default 0: half the local sampling spacing).
   void setTolerance(double eps) { options_.tolerance = eps; }
   double getTolerance() const { return options_.tolerance; }
   /// @brief Renormalise every k steps (default 0: automatic, 2 at the default time step).
   void setRenormalizationInterval(int k) { options_.renormalization_interval = k; }
   int getRenormalizationInterval() const { return options_.renormalization_interval; }
-  /// @brief Start from a sphere around the data (default) or inside it.
+  /// @brief Start from the tagged front around the data (default), a sphere around it or
+  /// inside it.
   void setInitialSurface(lsr::InitialFront start) { options_.initial_front = start; }
   lsr::InitialFront getInitialSurface() const { return options_.initial_front; }
   /// @brief 2 for curves in the plane z = const, 3 for surfaces, 0 (default): 2 when every
@@ -102,6 +106,14 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   void setOptions(const lsr::ReconstructionOptions& options) { options_ = options; }
   const lsr::ReconstructionOptions& getOptions() const { return options_; }
   const Status& getStatus() const { return status_; }
+  /// @brief After a 3D reconstruct(): one outward unit normal per point of the input cloud
+  /// (same size and order; NaN for points that were skipped or not in the indices), from PCA
+  /// of each point's neighbours oriented by the reconstructed level set. Consistently oriented
+  /// normals are what pcl::Poisson and the marching-cubes methods need:
+  /// @code
+  ///   pcl::concatenateFields(*cloud, ls.getInputNormals(), *with_normals);
+  /// @endcode
+  const pcl::PointCloud<pcl::Normal>& getInputNormals() const { return input_normals_; }
 
   /// @brief As SurfaceReconstruction::reconstruct, but safe without an input cloud.
   void reconstruct(pcl::PolygonMesh& output) override;
@@ -124,6 +136,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   lsr::ProgressCallback progress_;
   int dimension_ = 0;
   Status status_;
+  pcl::PointCloud<pcl::Normal> input_normals_;
 };
 
 }  // namespace pcl

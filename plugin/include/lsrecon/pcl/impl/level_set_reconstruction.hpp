@@ -14,6 +14,7 @@
 #include <pcl/surface/impl/reconstruction.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace pcl {
 
@@ -80,6 +81,7 @@ template <typename PointInT>
 bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& vertices,
                                            std::vector<pcl::Vertices>& polygons) {
   status_ = Status();
+  input_normals_.clear();
   vertices.clear();
   polygons.clear();
   try {
@@ -118,6 +120,12 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
     } else {
       const auto r = lsr::reconstruct<3>(in.points, options_, progress_);
       vertices = lsr::adapters::normal_cloud<3>(r.surface.vertices, r.normals);
+      const float nan = std::numeric_limits<float>::quiet_NaN();
+      input_normals_.assign(this->input_->size(), pcl::Normal(nan, nan, nan));
+      for (std::size_t i = 0; i < in.source.size() && i < r.point_normals.size(); ++i) {
+        const auto& n = r.point_normals[i];
+        input_normals_[std::size_t(in.source[i])] = pcl::Normal(float(n.x()), float(n.y()), float(n.z()));
+      }
       polygons = lsr::adapters::polygons_from_triangles(r.surface.facets);
       record(r);
     }

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file quadric_implicit.h
+/// @brief An implicit function through oriented points: one quadric height field per point,
+/// fitted to its neighbours in its tangent frame, blended by a partition of unity (the local
+/// fits of MPU implicits, Ohtake et al. 2003). Its zero set passes through the data to second
+/// order, where a front held between samples by curvature alone sags by O(spacing).
+///
+/// Each fit uses only neighbours whose normal agrees with the centre's (n_j . n_i > 0): with
+/// outward normals, the samples of the other side of a thin part or a close sheet are left out.
+#pragma once
+
+#include "lsrecon/core/nearest_point_index.h"
+
+#include <vector>
+
+namespace lsr {
+
+/// @brief F(x) ~ signed distance to the surface through the points (> 0 outside).
+template <int D>
+class QuadricImplicit {
+ public:
+  static constexpr int kFitNeighbours = D == 2 ? 10 : 30;  ///< points per local fit
+  static constexpr int kBlendCentres = D == 2 ? 4 : 12;    ///< fits blended at a query
+
+  /// @param data the points (#N) and their kd-tree
+  /// @param normals #N unit outward normals
+  /// @param spacing #N local sampling spacing: the width of each fit's blending weight
+  /// @param threads 0 for all cores
+  QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals, std::vector<double> spacing,
+                  int threads = 0);
+
+  /// @brief F at each query (#Q) and, if asked, the unit outward normal of the blended fits.
+  void evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal = nullptr,
+                int threads = 0) const;
+
+  /// @brief Moves each point onto {F = 0} (two steps x -= F(x) n(x)); returns the normals there.
+  Points<D> project(Points<D>& points, int threads = 0) const;
+
+ private:
+  struct Fit {
+    Eigen::Matrix<double, D, D> frame;  ///< rows: D-1 tangents, then the normal
+    double c0 = 0.0;
+    Eigen::Matrix<double, D - 1, 1> g;
+    Eigen::Matrix<double, D - 1, D - 1> h;
+    double reach = 0.0;  ///< radius of the neighbourhood fitted
+  };
+  double fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const;
+
+  const NearestPointIndex<D>& data_;
+  std::vector<double> spacing_;
+  std::vector<Fit> fits_;
+};
+
+}  // namespace lsr

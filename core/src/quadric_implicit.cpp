@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file quadric_implicit.cpp
+#include "lsrecon/core/quadric_implicit.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <omp.h>
+
+namespace lsr {
+namespace {
+
+int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
+
+// Rows: an orthonormal tangent basis of n, then n.
+template <int D>
+Eigen::Matrix<double, D, D> tangent_frame(const Vec<D>& n) {
+  Eigen::Matrix<double, D, D> f;
+  if constexpr (D == 2) {
+    f.row(0) = Eigen::RowVector2d(-n.y(), n.x());
+  } else {
+    const Vec<3> a = std::abs(n.x()) < 0.6 ? Vec<3>::UnitX() : Vec<3>::UnitY();
+    const Vec<3> t1 = n.cross(a).normalized();
+    f.row(0) = t1.transpose();
+    f.row(1) = n.cross(t1).transpose();
+  }
+  f.row(D - 1) = n.transpose();
+  return f;
+}
+
+// Monomials of the height field c0 + g.t + t^T H t / 2 in tangent coordinates t.
+template <int D>
+Eigen::Matrix<double, D == 2 ? 3 : 6, 1> monomials(const Eigen::Matrix<double, D - 1, 1>& t) {
+  if constexpr (D == 2) {
+    return Eigen::Vector3d(1.0, t[0], 0.5 * t[0] * t[0]);
+  } else {
+    Eigen::Matrix<double, 6, 1> m;
+    m << 1.0, t[0], t[1], 0.5 * t[0] * t[0], t[0] * t[1], 0.5 * t[1] * t[1];
+    return m;
+  }
+}
+
+}  // namespace
+
+template <int D>
+QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals,
+                                    std::vector<double> spacing, int threads)
+    : data_(data), spacing_(std::move(spacing)), fits_(data.points().size()) {
+  constexpr int kParams = D == 2 ? 3 : 6;
+  const Points<D>& p = data.points();
+  const int k = std::min<int>(kFitNeighbours, int(p.size()));
+  std::vector<Index> nearest;
+  data.query_k(p, k, nearest, threads);
+  const long n = long(p.size());
+#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
+  for (long i = 0; i < n; ++i) {
+    Fit& f = fits_[i];
+    f.frame = tangent_frame<D>(normals[i]);
+    const Index* near = &nearest[std::size_t(i) * k];
+    double reach = 0.0;
+    for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
+    f.reach = std::max(reach, 1e-12);
+    Eigen::Matrix<double, kParams, kParams> ata = Eigen::Matrix<double, kParams, kParams>::Zero();
+    Eigen::Matrix<double, kParams, 1> atz = Eigen::Matrix<double, kParams, 1>::Zero();
+    const double r2 = std::pow(1.2 * f.reach, 2);
+    for (int j = 0; j < k; ++j) {
+      if (normals[near[j]].dot(normals[i]) <= 0.0) continue;  // the other side of a thin part
+      const Vec<D> local = f.frame * (p[near[j]] - p[i]);
+      const double w = std::pow(1.0 - local.squaredNorm() / r2, 2);
+      const auto m = monomials<D>(local.template head<D - 1>());
+      ata += w * m * m.transpose();
+      atz += w * local[D - 1] * m;
+    }
+    // A light ridge on the slopes and curvatures (scaled to the fit's size) keeps sparse or
+    // colinear neighbourhoods solvable: they fall back towards the tangent plane.
+    const double scale = ata(0, 0) > 0.0 ? ata(0, 0) : 1.0;
+    for (int c = 1; c < kParams; ++c) ata(c, c) += 1e-6 * scale * std::pow(f.reach, c < D ? 2 : 4);
+    if (ata(0, 0) <= 0.0) ata(0, 0) = 1.0;
+    const Eigen::Matrix<double, kParams, 1> x = ata.ldlt().solve(atz);
+    f.c0 = x[0];
+    f.g = x.template segment<D - 1>(1);
+    if constexpr (D == 2) {
+      f.h(0, 0) = x[2];
+    } else {
+      f.h << x[3], x[4], x[4], x[5];
+    }
+  }
+}
+
+template <int D>
+double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const {
+  const Vec<D> local = f.frame * (x - centre);
+  const Eigen::Matrix<double, D - 1, 1> t = local.template head<D - 1>();
+  // Far along the tangent the quadric's extrapolation is not trusted: its curvature term fades
+  // beyond twice the fitted neighbourhood (sampling holes are spanned by tangent planes).
+  const double fade = 1.0 / (1.0 + t.squaredNorm() / std::pow(2.0 * f.reach, 2));
+  const Eigen::Matrix<double, D - 1, 1> ht = f.h * t;
+  const double height = f.c0 + f.g.dot(t) + 0.5 * fade * t.dot(ht);
+  const Eigen::Matrix<double, D - 1, 1> slope = f.g + fade * ht;
+  const double norm = std::sqrt(1.0 + slope.squaredNorm());
+  if (normal) {
+    Vec<D> n_local;
+    n_local.template head<D - 1>() = -slope;
+    n_local[D - 1] = 1.0;
+    *normal = f.frame.transpose() * n_local / norm;
+  }
+  return (local[D - 1] - height) / norm;
+}
+
+template <int D>
+void QuadricImplicit<D>::evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal,
+                                  int threads) const {
+  const Points<D>& p = data_.points();
+  const int k = std::min<int>(kBlendCentres, int(p.size()));
+  std::vector<Index> nearest;
+  data_.query_k(queries, k, nearest, threads);
+  value.assign(queries.size(), 0.0);
+  if (normal) normal->assign(queries.size(), Vec<D>::Zero());
+  const long n = long(queries.size());
+#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
+  for (long q = 0; q < n; ++q) {
+    const Index* near = &nearest[std::size_t(q) * k];
+    // Gaussian weights of width spacing_i, relative to the largest so that far queries do not
+    // underflow to 0 / 0.
+    double exponent[32];
+    double top = -std::numeric_limits<double>::infinity();
+    for (int j = 0; j < k; ++j) {
+      exponent[j] = -(queries[q] - p[near[j]]).squaredNorm() / std::pow(std::max(spacing_[near[j]], 1e-12), 2);
+      top = std::max(top, exponent[j]);
+    }
+    double sum = 0.0, weights = 0.0;
+    Vec<D> nsum = Vec<D>::Zero();
+    for (int j = 0; j < k; ++j) {
+      const double w = std::exp(exponent[j] - top);
+      Vec<D> nj;
+      sum += w * fit_value(fits_[near[j]], p[near[j]], queries[q], normal ? &nj : nullptr);
+      if (normal) nsum += w * nj;
+      weights += w;
+    }
+    value[q] = sum / weights;
+    if (normal) (*normal)[q] = nsum.normalized();
+  }
+}
+
+template <int D>
+Points<D> QuadricImplicit<D>::project(Points<D>& points, int threads) const {
+  std::vector<double> f;
+  Points<D> n;
+  for (int step = 0; step < 2; ++step) {
+    evaluate(points, f, &n, threads);
+    for (std::size_t i = 0; i < points.size(); ++i) points[i] -= f[i] * n[i];
+  }
+  evaluate(points, f, &n, threads);
+  return n;
+}
+
+template class QuadricImplicit<2>;
+template class QuadricImplicit<3>;
+
+}  // namespace lsr
