@@ -488,7 +488,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {
-    const QuadricImplicit<D> fit(data, normals, point_scale, o.threads);
+    const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
     attach_fit(r, mesh, fit, best, spacing, o.gap_factor, o.threads);
     clock.end("fit");
   } else {

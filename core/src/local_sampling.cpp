@@ -12,15 +12,18 @@
 namespace lsr {
 namespace {
 
-// Distance to the rank-th neighbour at a positive distance (the farthest found if fewer).
+// Distance to the rank-th neighbour counting each position once (copies of p_i or of a
+// neighbour are skipped; the farthest found if fewer).
 template <int D>
 double kth_distinct_distance(const Points<D>& p, const Index* nearest, int k, std::size_t i, int rank) {
   int found = 0;
   double last = 0.0;
+  const Vec<D>* previous = &p[i];
   for (int j = 0; j < k; ++j) {
-    const double s = (p[nearest[j]] - p[i]).norm();
-    if (s <= 0.0) continue;
-    last = s;
+    const Vec<D>& q = p[nearest[j]];
+    if (q == p[i] || q == *previous) continue;  // sorted by distance: copies are adjacent
+    previous = &q;
+    last = (q - p[i]).norm();
     if (++found == rank) break;
   }
   return last;

@@ -47,19 +47,34 @@ Eigen::Matrix<double, D == 2 ? 3 : 6, 1> monomials(const Eigen::Matrix<double, D
 
 template <int D>
 QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals,
-                                    std::vector<double> spacing, int threads)
+                                    std::vector<double> spacing, const std::vector<double>& noise, int threads)
     : data_(data), spacing_(std::move(spacing)), fits_(data.points().size()) {
   constexpr int kParams = D == 2 ? 3 : 6;
   const Points<D>& p = data.points();
-  const int k = std::min<int>(kFitNeighbours, int(p.size()));
-  std::vector<Index> nearest;
-  data.query_k(p, k, nearest, threads);
   const long n = long(p.size());
+  // Neighbourhoods: kFitNeighbours for all, and a second, wider query for the noisy points.
+  const int k_clean = std::min<int>(kFitNeighbours, int(p.size()));
+  const int k_wide = std::min<int>(kMaxFitNeighbours, int(p.size()));
+  std::vector<int> size(p.size(), k_clean);
+  Points<D> noisy;
+  std::vector<Index> noisy_index(p.size(), -1);
+  for (std::size_t i = 0; i < p.size() && !noise.empty(); ++i) {
+    const double ratio = noise[i] / (0.05 * std::max(spacing_[i], 1e-300));
+    size[i] = int(std::min<double>(k_wide, k_clean * (1.0 + ratio * ratio)));
+    if (size[i] > k_clean) {
+      noisy_index[i] = Index(noisy.size());
+      noisy.push_back(p[i]);
+    }
+  }
+  std::vector<Index> nearest, wide;
+  data.query_k(p, k_clean, nearest, threads);
+  data.query_k(noisy, k_wide, wide, threads);
 #pragma omp parallel for schedule(static) num_threads(thread_count(threads))
   for (long i = 0; i < n; ++i) {
     Fit& f = fits_[i];
     f.frame = tangent_frame<D>(normals[i]);
-    const Index* near = &nearest[std::size_t(i) * k];
+    const int k = size[i];
+    const Index* near = noisy_index[i] >= 0 ? &wide[std::size_t(noisy_index[i]) * k_wide] : &nearest[std::size_t(i) * k_clean];
     double reach = 0.0;
     for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
     f.reach = std::max(reach, 1e-12);

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file local_sampling_test.cpp
+/// @brief The spacing rule on regular and random samples, the noise and normal estimates.
+#include "lsrecon/core/local_sampling.h"
+#include "lsrecon/core/shape_corpus.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace lsr {
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+TEST(LocalSampling, RegularSamplesGiveTheirGap) {
+  // Hexagonal lattice in the plane z = 0.5 (six neighbours at distance a), and an evenly
+  // spaced circle (two neighbours at the chord): the rule's k is their neighbour count.
+  const double a = 0.01;
+  Points<3> lattice;
+  for (int i = 0; i < 60; ++i) {
+    for (int j = 0; j < 60; ++j) lattice.emplace_back(0.2 + a * (i + 0.5 * (j % 2)), 0.2 + a * std::sqrt(0.75) * j, 0.5);
+  }
+  const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(lattice));
+  EXPECT_NEAR(median(s.spacing), a, 1e-9);
+  EXPECT_NEAR(std::abs(s.normals[1830].z()), 1.0, 1e-9);
+  EXPECT_LT(median(s.noise), 1e-9);
+
+  const int n = 1000;
+  Points<2> circle;
+  for (int i = 0; i < n; ++i) circle.emplace_back(0.5 + 0.3 * std::cos(2 * kPi * i / n), 0.5 + 0.3 * std::sin(2 * kPi * i / n));
+  const LocalSampling<2> c = estimate_local_sampling(NearestPointIndex<2>(circle));
+  EXPECT_NEAR(median(c.spacing), 2 * 0.3 * std::sin(kPi / n), 1e-9);
+}
+
+TEST(LocalSampling, RandomSurfaceSamplesGiveTheSixthNeighbourScaleAndIgnoreDuplicates) {
+  // i.i.d. points of density rho on a surface: the 6th-neighbour distance r has
+  // pi rho r^2 ~ Gamma(6, 1), whose median is 5.67; so median(spacing) ~ sqrt(5.67 / (pi rho)).
+  const int n = 20000;
+  Points<3> p = sample_implicit_surface([](const Vec<3>& x) { return x.norm() - 1.0; }, -1.1 * Vec<3>::Ones(),
+                                        1.1 * Vec<3>::Ones(), n, 5);
+  const double rho = n / (4 * kPi);
+  const double expected = std::sqrt(5.67 / (kPi * rho));
+  const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(p));
+  // The median filter and the curvature (r / R ~ 0.05) move it by a few percent.
+  EXPECT_NEAR(median(s.spacing), expected, 0.08 * expected);
+  // Every point twice: the same scales.
+  Points<3> twice = p;
+  twice.insert(twice.end(), p.begin(), p.end());
+  const LocalSampling<3> t = estimate_local_sampling(NearestPointIndex<3>(twice));
+  EXPECT_NEAR(median(t.spacing), median(s.spacing), 0.08 * expected);
+  for (std::size_t i = 0; i < 100; ++i) EXPECT_GT(std::abs(s.normals[i].dot(p[i])), 0.95);
+}
+
+TEST(LocalSampling, NoiseOfAPlaneIsItsDeviation) {
+  // A plane with Gaussian noise sigma across it: the smallest PCA deviation of 16 neighbours is
+  // sigma times sqrt((k - 1) / k) on average; the median filter keeps it within 20%.
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const double sigma = 0.002;
+  Points<3> p;
+  for (int i = 0; i < 20000; ++i) p.emplace_back(unit(rng), unit(rng), 0.5 + sigma * gauss(rng));
+  const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(p));
+  EXPECT_NEAR(median(s.noise), sigma, 0.2 * sigma);
+}
+
+}  // namespace
+}  // namespace lsr

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file quadric_implicit_test.cpp
+/// @brief The blended quadric fit is exact on planes and quadrics of the tangent frame, and its
+/// error on a sphere is the next term of the height function, r^4 / (8 R^3).
+#include "lsrecon/core/local_sampling.h"
+#include "lsrecon/core/quadric_implicit.h"
+#include "lsrecon/core/shape_corpus.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace lsr {
+namespace {
+
+TEST(QuadricImplicit, PlaneIsExact) {
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Points<3> p;
+  for (int i = 0; i < 3000; ++i) p.emplace_back(unit(rng), unit(rng), 0.4);
+  const NearestPointIndex<3> index(p);
+  const QuadricImplicit<3> f(index, Points<3>(p.size(), Vec<3>::UnitZ()), std::vector<double>(p.size(), 0.03));
+  std::vector<double> value;
+  Points<3> normal;
+  f.evaluate({Vec<3>(0.5, 0.5, 0.45), Vec<3>(0.3, 0.6, 0.38)}, value, &normal);
+  EXPECT_NEAR(value[0], 0.05, 1e-9);
+  EXPECT_NEAR(value[1], -0.02, 1e-9);
+  EXPECT_NEAR(normal[0].z(), 1.0, 1e-9);
+}
+
+TEST(QuadricImplicit, SphereErrorIsTheFourthOrderTermOfItsNeighbourhood) {
+  const double R = 1.0;
+  const int n = 20000;
+  const Points<3> p = sample_implicit_surface([R](const Vec<3>& x) { return x.norm() - R; }, -1.1 * Vec<3>::Ones(),
+                                              1.1 * Vec<3>::Ones(), n, 9);
+  const NearestPointIndex<3> index(p);
+  const LocalSampling<3> s = estimate_local_sampling(index);
+  Points<3> normals;
+  for (const auto& x : p) normals.push_back(x.normalized());
+  const QuadricImplicit<3> f(index, normals, s.spacing);
+  // A fit's neighbourhood holds 30 points, radius about r with pi r^2 rho = 30; 30 random
+  // points lie within 2 r with overwhelming probability (a disc of radius 2 r holds 120 on
+  // average), and a blended fit is evaluated within that radius of its centre. The height
+  // function's first term a quadric cannot follow is t^4 / (8 R^3).
+  const double r = std::sqrt(30.0 / (std::acos(-1.0) * n / (4 * std::acos(-1.0) * R * R)));
+  const double bound = std::pow(2 * r, 4) / (8 * R * R * R);
+  Points<3> q;
+  std::vector<double> truth;
+  for (int i = 0; i < 2000; i += 7) {
+    const double offset = 0.02 * ((i % 5) - 2);
+    q.push_back(p[i] * (1 + offset / R));
+    truth.push_back(offset);
+  }
+  std::vector<double> value;
+  f.evaluate(q, value);
+  for (std::size_t k = 0; k < q.size(); ++k) EXPECT_NEAR(value[k], truth[k], bound + 1e-3 * std::abs(truth[k]));
+  Points<3> moved = q;
+  f.project(moved);
+  for (const auto& x : moved) EXPECT_NEAR(x.norm(), R, bound);
+}
+
+TEST(QuadricImplicit, CircleIn2D) {
+  const int n = 2000;
+  Points<2> p, normals;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::acos(-1.0) * (i + 0.37 * std::sin(i)) / n;
+    normals.emplace_back(std::cos(t), std::sin(t));
+    p.push_back(0.3 * normals.back());
+  }
+  const NearestPointIndex<2> index(p);
+  const LocalSampling<2> s = estimate_local_sampling(index);
+  const QuadricImplicit<2> f(index, normals, s.spacing);
+  Points<2> q{Vec<2>(0.31, 0.0), Vec<2>(0.0, -0.29)};
+  f.project(q);
+  // Ten points span r = 5 spacings of 0.3 * 2 pi / n; as on the sphere, the bound is the
+  // quartic term over twice that radius.
+  const double r = 5 * 0.3 * 2 * std::acos(-1.0) / n;
+  const double bound = std::pow(2 * r, 4) / (8 * 0.3 * 0.3 * 0.3);
+  EXPECT_NEAR(q[0].norm(), 0.3, bound);
+  EXPECT_NEAR(q[1].norm(), 0.3, bound);
+}
+
+}  // namespace
+}  // namespace lsr

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file random_reconstruction_test.cpp
+/// @brief End to end on i.i.d. random samples (core/shape_corpus.h): topology, convergence,
+/// distance to the true surface and the oriented normals of the input.
+///
+/// Bounds. Output vertices are projected onto the blended quadric fit, whose error on a
+/// surface of curvature radius R is the quartic term of the height function over a fit's
+/// reach, (2 r)^4 / (8 R^3) with pi r^2 rho = 30 (quadric_implicit_test.cpp); facets of size up
+/// to twice the local scale s add their sagitta (2 s)^2 / (8 R) between vertices.
+#include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/core/surface_topology.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lsr {
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+struct Outcome {
+  ReconstructionResult<3> r;
+  SurfaceTopology topology;
+  SurfaceDistances distances;
+  std::vector<int> genus;  // sorted
+};
+
+Outcome run(const TestShape& shape, const SampledShape& sample) {
+  Outcome o;
+  o.r = reconstruct<3>(sample.points);
+  o.topology = analyze_surface(o.r.surface.vertices, o.r.surface.facets);
+  o.distances = compare_to_truth(o.r.surface.vertices, o.r.surface.facets, shape.sdf,
+                                 sample_implicit_surface(shape.sdf, shape.lo, shape.hi, 20000, 3), 20000);
+  o.genus = o.topology.genus;
+  std::sort(o.genus.begin(), o.genus.end());
+  return o;
+}
+
+// The bound of the file comment for n points on area A, curvature radius R, scale s.
+double fit_bound(int n, double area, double R) {
+  const double rho = n / area;
+  const double r = std::sqrt(30.0 / (kPi * rho));
+  const double s = std::sqrt(6.0 / (kPi * rho));
+  return std::pow(2 * r, 4) / (8 * R * R * R) + 4 * s * s / (8 * R);
+}
+
+TEST(RandomReconstruction, SphereConvergesWithinTheFitBound) {
+  const TestShape shape = make_test_shape("sphere");
+  const int n = 3000;
+  const Outcome o = run(shape, sample_test_shape(shape, n));
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
+  EXPECT_TRUE(o.topology.watertight && o.topology.edge_manifold && o.topology.vertex_manifold && o.topology.oriented);
+  EXPECT_EQ(o.genus, std::vector<int>{0});
+  EXPECT_LE(o.distances.hausdorff, fit_bound(n, 4 * kPi, 1.0));
+  EXPECT_GT(o.distances.normal_consistency, 0.99);
+}
+
+TEST(RandomReconstruction, TorusHasGenusOneAndOutwardInputNormals) {
+  const TestShape shape = make_test_shape("torus");
+  const SampledShape sample = sample_test_shape(shape, 4000);
+  const Outcome o = run(shape, sample);
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, std::vector<int>{1});
+  // Curvature radius 0.4 (the tube) bounds the error; area 4 pi^2 R r.
+  EXPECT_LE(o.distances.hausdorff, fit_bound(4000, 4 * kPi * kPi * 0.4, 0.4));
+  // Every input normal outward (a wrong orientation gives a negative product), most of them
+  // within the PCA error of 16 neighbours.
+  ASSERT_EQ(o.r.point_normals.size(), sample.points.size());
+  double mean = 0.0;
+  for (std::size_t i = 0; i < sample.points.size(); ++i) {
+    const double c = o.r.point_normals[i].dot(sample.normals[i]);
+    EXPECT_GT(c, 0.0) << "point " << i;
+    mean += c / double(sample.points.size());
+  }
+  EXPECT_GT(mean, 0.98);
+}
+
+TEST(RandomReconstruction, LinkedRingsStayTwoRingsOfGenusOne) {
+  const TestShape shape = make_test_shape("linked-rings");
+  const Outcome o = run(shape, sample_test_shape(shape, 5000));
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, (std::vector<int>{1, 1}));
+  EXPECT_LE(o.distances.hausdorff, fit_bound(5000, 2 * 4 * kPi * kPi * 0.25, 0.25));
+}
+
+TEST(RandomReconstruction, TenfoldDensityGradientKeepsTheTopology) {
+  // One global spacing would tunnel through the sparse side or refine the dense one for nothing.
+  const TestShape shape = make_test_shape("torus");
+  SamplingVariant v;
+  v.density_ratio = 10.0;
+  const Outcome o = run(shape, sample_test_shape(shape, 5000, v));
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, std::vector<int>{1});
+  // The sparse end has a tenth of the mean density's ~ 2x: n / 5.5 points' worth.
+  EXPECT_LE(o.distances.hausdorff, fit_bound(5000 / 5.5, 4 * kPi * kPi * 0.4, 0.4));
+}
+
+TEST(RandomReconstruction, NoisySphereIsSmootherThanItsNoise) {
+  // sigma = 0.5% of the diagonal per coordinate: the data lie sigma from the sphere on
+  // average (sqrt(2 / pi) sigma in the normal direction); the fit averages 30-120 of them.
+  const TestShape shape = make_test_shape("sphere");
+  SamplingVariant v;
+  v.noise = 0.005;
+  const SampledShape sample = sample_test_shape(shape, 4000, v);
+  const Outcome o = run(shape, sample);
+  EXPECT_NE(o.r.status, ReconstructionStatus::cancelled);
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, std::vector<int>{0});
+  const double sigma = v.noise * sample.diagonal;
+  EXPECT_LT(o.distances.chamfer, 0.5 * std::sqrt(2 / kPi) * sigma);
+  EXPECT_LT(o.distances.hausdorff, 4 * sigma);
+}
+
+}  // namespace
+}  // namespace lsr
