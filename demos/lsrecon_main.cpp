@@ -41,16 +41,21 @@ OUTPUT  3D: .ply .obj .off .stl     2D: .svg (drawing) or .txt (one closed polyl
 SHAPE   generated clouds: torus sphere two-spheres (3D), star three-shapes (2D)
 
 options (lengths are in the unit box the data is mapped into: its bounding ball has radius 0.4)
-  --resolution R                1/h_min, finest mesh size; 0 = from the data     (default 0)
+  --resolution R                1/h_min, same mesh size everywhere near the data;
+                                0 = follow the local sampling spacing             (default 0)
   --max-size H                  coarsest mesh size                                (default 0.125)
   --grading C                   mesh grading; smaller = wider fine band           (default 2)
   --alpha A                     attraction; 0 = +2 (enclose), -2 (inside)         (default 0)
-  --curvature-weight B          smoothness; < 0 = automatic from h_min and noise  (default -1)
+  --curvature-weight B          smoothness; < 0 = local, from spacing and noise   (default -1)
   --time-step DT                0 = 0.2/|alpha|                                   (default 0)
   --max-iterations N            time steps at most                                (default 1000)
-  --tolerance EPS               stop when data and surface are this close; 0 = h_min (default 0)
+  --tolerance EPS               stop when data and front are this close;
+                                0 = one local sampling spacing                    (default 0)
+  --hole-radius H               experimental: span sampling holes up to H          (default 0)
+  --no-fit                      output the front itself, not the fit through the data
   --renormalization-interval K  0 = automatic                                     (default 0)
-  --init enclose|inside         start around the data or inside it               (default enclose)
+  --init tagged|enclose|inside  start hugging the data from outside (flood from the
+                                box walls), on a sphere around it or inside it    (default tagged)
   --dim 2|3                     force the dimension; else 2 for planar input      (default auto)
   --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
   --smooth N                    N rounds of Laplace smoothing of the 3D result    (default 0)
@@ -111,6 +116,10 @@ Cli parse(int argc, char** argv) {
       c.quiet = true;
       continue;
     }
+    if (a == "--no-fit") {
+      c.solver.fit_surface = false;
+      continue;
+    }
     if (a.rfind("--", 0) != 0) {
       positional.push_back(a);
       continue;
@@ -138,12 +147,18 @@ Cli parse(int argc, char** argv) {
       s.max_iterations = int(number(a, v, 1, 1e7));
     } else if (a == "--tolerance") {
       s.tolerance = number(a, v, 0, 0.5);
+    } else if (a == "--hole-radius") {
+      s.hole_radius = number(a, v, 0, 0.49);
     } else if (a == "--renormalization-interval") {
       s.renormalization_interval = int(number(a, v, 0, 1000));
     } else if (a == "--init") {
       const std::string init = v;
-      if (init != "enclose" && init != "inside") usage_error("--init must be enclose or inside, got '" + init + "'");
-      s.initial_front = init == "inside" ? lsr::InitialFront::inside : lsr::InitialFront::enclosing;
+      if (init != "tagged" && init != "enclose" && init != "inside") {
+        usage_error("--init must be tagged, enclose or inside, got '" + init + "'");
+      }
+      s.initial_front = init == "inside"    ? lsr::InitialFront::inside
+                        : init == "enclose" ? lsr::InitialFront::enclosing
+                                            : lsr::InitialFront::tagged;
     } else if (a == "--dim") {
       c.dim = int(number(a, v, 2, 3));
     } else if (a == "--decimate") {
@@ -280,6 +295,8 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
       << "  \"time_steps\": " << r.iterations << ",\n  \"best_step\": " << r.best_iteration << ",\n"
       << "  \"converged\": " << (r.status == lsr::ReconstructionStatus::converged ? "true" : "false") << ",\n"
       << "  \"residual\": " << r.residual << ",\n  \"tolerance\": " << r.tolerance << ",\n"
+      << "  \"unreached_points\": " << r.unreached_points << ",\n  \"spacing\": " << r.spacing << ",\n"
+      << "  \"tagged_start\": " << (r.tagged_start ? "true" : "false") << ",\n"
       << "  \"noise\": " << r.noise << ",\n  \"seconds\": {";
     std::map<std::string, double> seconds = r.seconds;
     for (const auto& [k, v] : extra_seconds) seconds[k] = v;
@@ -305,6 +322,10 @@ void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   if (!quiet) {
     std::fputc('\n', stderr);
     for (const auto& [stage, seconds] : r.seconds) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), seconds);
+  }
+  if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
+    std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "
+                         "slits between close sheets), where the fit places the surface\n", r.unreached_points);
   }
   if (r.status == lsr::ReconstructionStatus::not_converged) {
     std::fprintf(stderr, "lsrecon: not converged: the best iterate (step %d, residual %.3g > tolerance %.3g) is "

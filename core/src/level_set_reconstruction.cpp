@@ -115,6 +115,7 @@ void check_options(const ReconstructionOptions& o) {
   factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 1.5 (local spacings)");
   factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local spacings)");
   factor(o.curvature_factor, "curvature_factor", -1e-300, 100.0, "use 0.25");
+  if (!(o.hole_radius >= 0.0 && o.hole_radius < 0.5)) bad("hole_radius must be in [0, 0.5) (unit box)", "use 0 (no closing) or e.g. 0.06");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
@@ -227,20 +228,34 @@ double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd&
   return values[values.size() / 2];
 }
 
-// u0 for the tagged start: the signed distance to the boundary of the vertices reachable from
-// the walls while staying farther than gap_factor local spacings from the data. Empty when
-// nothing is reachable (data against the walls) or nothing is left inside.
+// The signed distance to the boundary of the flooded vertices (> 0 in the flood); empty when
+// the flood is empty or everything.
 template <int D>
-Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const Eigen::VectorXd& distance, const Eigen::VectorXd& spacing,
-                             double gap_factor, int threads) {
-  std::vector<char> passable(mesh.vertices.size());
-  for (std::size_t v = 0; v < passable.size(); ++v) passable[v] = distance[v] > gap_factor * spacing[v];
-  const std::vector<char> outside = flood_from_walls(mesh, passable);
-  Eigen::VectorXd u(Eigen::Index(outside.size()));
-  for (std::size_t v = 0; v < outside.size(); ++v) u[v] = outside[v] ? 1.0 : -1.0;
+Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const std::vector<char>& flooded, int threads) {
+  Eigen::VectorXd u(Eigen::Index(flooded.size()));
+  for (std::size_t v = 0; v < flooded.size(); ++v) u[v] = flooded[v] ? 1.0 : -1.0;
   if (u.minCoeff() > 0.0 || u.maxCoeff() < 0.0) return {};
   renormalize(mesh, u, Eigen::VectorXd::Ones(u.size()), std::numeric_limits<double>::infinity(), threads);
   return u;
+}
+
+// u0 for the tagged start: the region reachable from the walls while staying farther than
+// gap_factor local scales from the data, after a closing at the hole radius H: first the
+// flood of the vertices farther than H from the data, grown back by H (a union of empty balls
+// of radius H, which cannot pass a sampling hole narrower than H), then restricted to the
+// vertices farther than the gap. Empty when nothing is reachable (data against the walls).
+template <int D>
+Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
+                             double gap_factor, double hole_radius, int threads) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<char> passable(n);
+  for (std::size_t v = 0; v < n; ++v) passable[v] = distance[v] > hole_radius;
+  const Eigen::VectorXd deep = hole_radius > 0.0 ? flood_distance(mesh, flood_from_walls(mesh, passable), threads)
+                                                 : Eigen::VectorXd();
+  for (std::size_t v = 0; v < n; ++v) {
+    passable[v] = distance[v] > gap_factor * scale[v] && (deep.size() == 0 || deep[v] > -hole_radius);
+  }
+  return flood_distance(mesh, flood_from_walls(mesh, passable), threads);
 }
 
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
@@ -401,9 +416,17 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
   } else if (o.initial_front == InitialFront::tagged) {
-    u = tagged_start(mesh, distance, spacing, o.gap_factor, o.threads);
+    const double hole_radius = o.hole_radius;
+    u = tagged_start(mesh, distance, spacing, o.gap_factor, hole_radius, o.threads);
     r.tagged_start = u.size() > 0;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
+    if (r.tagged_start && hole_radius > 0.0) {
+      // The front only has to close the gap (and span holes): the attraction stops hole_radius
+      // plus the gap below the start, so a cap over a sampling hole cannot tunnel inside.
+      for (Eigen::Index v = 0; v < u.size(); ++v) {
+        if (u[v] < -(hole_radius + o.gap_factor * spacing[v])) d[v] = 0.0;
+      }
+    }
   } else {
     u = initial_field(mesh, data, o.initial_front, r.h_min);
   }
