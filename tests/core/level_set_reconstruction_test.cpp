@@ -2,10 +2,12 @@
 /// @file level_set_reconstruction_test.cpp
 /// @brief The paper's experiments end to end, and the pipeline's handling of bad input.
 ///
-/// Tolerances follow from the stopping test: when it fires, every data point is within
-/// eps = h_min of the front and the front within eps + spacing / 2 of the data, and the data
-/// lie on the true shape; so the two-sided distance to the truth is below 2 h_min, plus the
-/// truth's own sampling where it is measured on samples.
+/// These are the regular (lattice, evenly spaced) cases; random samples are in
+/// random_reconstruction_test.cpp. Tolerances follow from the stopping test: when it fires,
+/// every data point is within eps (r.tolerance, one local spacing) of the front, the fit
+/// through the data then places the surface closer, and the data lie on the true shape; so
+/// the two-sided distance to the truth is below 2 eps, plus the truth's own sampling where it
+/// is measured on samples.
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"

@@ -3,6 +3,7 @@
 /// @brief pcl::LevelSetReconstruction used exactly like pcl::Poisson.
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/surface_topology.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 
@@ -152,6 +153,35 @@ TEST(PclLevelSetReconstruction, HonoursIndicesAndSetters) {
   EXPECT_TRUE(ls.getStatus().ok);
   EXPECT_EQ(ls.getStatus().iterations, 3);
   EXPECT_FALSE(ls.getStatus().converged);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(PclLevelSetReconstruction, InputNormalsAreAlignedWithTheCloudAndOutward) {
+  // A random torus with one NaN point: one normal per cloud point, NaN where skipped, outward
+  // (the dot product with the true normal is positive) everywhere else.
+  const lsr::TestShape shape = lsr::make_test_shape("torus");
+  const lsr::SampledShape sample = lsr::sample_test_shape(shape, 3000);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : sample.points) cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  (*cloud)[10] = pcl::PointXYZ(nan, nan, nan);
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(cloud);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok);
+  const auto& normals = ls.getInputNormals();
+  ASSERT_EQ(normals.size(), cloud->size());
+  EXPECT_TRUE(std::isnan(normals[10].normal_x));
+  for (std::size_t i = 0; i < cloud->size(); ++i) {
+    if (i == 10) continue;
+    const Eigen::Vector3d n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
+    EXPECT_NEAR(n.norm(), 1.0, 1e-5);
+    EXPECT_GT(n.dot(sample.normals[i]), 0.0) << "point " << i;
+  }
 }
 
 }  // namespace
