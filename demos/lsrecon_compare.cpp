@@ -53,6 +53,7 @@ struct Settings {
   std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson8-lsrecon", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
   int points = 20000;
   lsr::SamplingVariant variant;
+  double hole_radius = 0.0;  ///< lsrecon's hole_radius option
 };
 
 const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
@@ -144,13 +145,16 @@ struct Produced {
   std::vector<double> residuals;  // lsrecon only
 };
 
-Produced run_method(const std::string& method, const lsr::demos::CompareCase& c) {
+Produced run_method(const std::string& method, const lsr::demos::CompareCase& c, const Settings& s) {
   Produced out;
   pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
   if (method == "lsrecon" || method == "poisson8-lsrecon") {
     pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
     ls.setInputCloud(xyz);
+    lsr::ReconstructionOptions options;
+    options.hole_radius = s.hole_radius;
+    ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
                std::to_string(ls.getStatus().iterations) + " steps";
@@ -277,7 +281,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     return 0;
   }
   lsr::demos::Stopwatch clock;
-  const Produced p = run_method(method, c);
+  const Produced p = run_method(method, c, s);
   const double seconds = clock.lap();
   const double memory = peak_mib();
   lsr::Points<3> vertices;
@@ -314,7 +318,7 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
                         (s.input.empty() ? "" : " --input '" + s.input + "'") + " --points " +
                         std::to_string(s.points) + " --noise " + std::to_string(s.variant.noise) + " --holes " +
                         std::to_string(s.variant.holes) + " --density-ratio " + std::to_string(s.variant.density_ratio) +
-                        " 2>/dev/null";
+                        " --hole-radius " + std::to_string(s.hole_radius) + " 2>/dev/null";
   FILE* pipe = popen(command.c_str(), "r");
   std::string row;
   char buffer[4096];
@@ -379,11 +383,13 @@ int main(int argc, char** argv) {
       s.variant.noise = std::atof(value().c_str());
     } else if (a == "--holes") {
       s.variant.holes = std::atoi(value().c_str());
+    } else if (a == "--hole-radius") {
+      s.hole_radius = std::atof(value().c_str());
     } else if (a == "--density-ratio") {
       s.variant.density_ratio = std::atof(value().c_str());
     } else {
       std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b | --input FILE] [--methods a,b] [--points N] "
-                           "[--noise S] [--holes N] [--density-ratio R]\n  cases: sphere torus double-torus triple-torus trefoil linked-rings cup limb two-spheres\n"
+                           "[--noise S] [--holes N] [--density-ratio R] [--hole-radius H (lsrecon's)]\n  cases: sphere torus double-torus triple-torus trefoil linked-rings cup limb two-spheres\n"
                            "  methods: lsrecon poisson8 poisson9 poisson8-lsrecon poisson8-true mc-hoppe mc-rbf gp3\n");
       return a == "--help" ? 0 : 2;
     }

@@ -291,15 +291,19 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
+// With a hole radius H, the front's cap over a hole may lie up to H below the fit's (which
+// spans it by extending the fits of its rim): band and trust zone widen by H so that the fit
+// owns the space between the two.
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
-                const Eigen::VectorXd& u, const Eigen::VectorXd& spacing, double trust_factor, int threads) {
+                const Eigen::VectorXd& u, const Eigen::VectorXd& spacing, double trust_factor, double hole_radius,
+                int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
   std::vector<Index> band_vertices;
   for (Eigen::Index v = 0; v < u.size(); ++v) {
-    if (std::abs(u[v]) < band_factor * spacing[v]) {
+    if (std::abs(u[v]) < band_factor * spacing[v] + hole_radius) {
       band.push_back(mesh.vertices[v]);
       band_vertices.push_back(Index(v));
     }
@@ -310,7 +314,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
   for (std::size_t k = 0; k < band.size(); ++k) {
     const Index v = band_vertices[k];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * spacing[v];
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * spacing[v] + hole_radius;
     values[v] = trusted ? f[k] : u[v];
   }
   r.surface = extract_zero_level_set(mesh, values);
@@ -405,9 +409,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   const double median_eps = median(eps);
   r.tolerance = median_eps / box.scale();
-  const Eigen::VectorXd front_tolerance =
-      (o.tolerance > 0.0 ? Eigen::VectorXd::Constant(Eigen::Index(nv), o.tolerance) : Eigen::VectorXd(o.tolerance_factor * spacing)) +
-      o.gap_factor * spacing;
+  // Over a sampling hole the front spans up to hole_radius away from the data.
+  Eigen::VectorXd front_tolerance(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * spacing[v]) + o.gap_factor * spacing[v] + o.hole_radius;
+  }
   Eigen::VectorXd u(nv);
   if (custom_start) {
     for (std::size_t i = 0; i < nv; ++i) u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
@@ -512,7 +518,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, spacing, o.gap_factor, o.threads);
+    attach_fit(r, mesh, fit, best, spacing, o.gap_factor, o.hole_radius, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
