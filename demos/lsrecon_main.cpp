@@ -8,6 +8,7 @@
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"
@@ -38,7 +39,8 @@ level-set method of Claisse & Frey (2011). No normals needed.
 INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] per line), .obj .off .stl (vertices),
         .pgm .png (2D: every dark pixel is a point)
 OUTPUT  3D: .ply .obj .off .stl     2D: .svg (drawing) or .txt (one closed polyline per loop)
-SHAPE   generated clouds: torus sphere two-spheres (3D), star three-shapes (2D)
+SHAPE   generated clouds: i.i.d. random samples of sphere torus double-torus triple-torus
+        trefoil linked-rings cup limb two-spheres (3D); star three-shapes (2D)
 
 options (lengths are in the unit box the data is mapped into: its bounding ball has radius 0.4)
   --resolution R                1/h_min, same mesh size everywhere near the data;
@@ -183,8 +185,9 @@ Cli parse(int argc, char** argv) {
   }
   if (c.demo.empty()) c.input = positional[0];
   c.output = positional.back();
-  if (!c.demo.empty() && c.demo != "torus" && c.demo != "sphere" && c.demo != "two-spheres" && !is_2d_shape(c.demo)) {
-    usage_error("--demo must be torus, sphere, two-spheres, star or three-shapes, got '" + c.demo + "'");
+  const auto shapes = lsr::test_shape_names();
+  if (!c.demo.empty() && std::find(shapes.begin(), shapes.end(), c.demo) == shapes.end() && !is_2d_shape(c.demo)) {
+    usage_error("--demo must be one of the SHAPE names in --help, got '" + c.demo + "'");
   }
   const std::string out = lsr::adapters::file_extension(c.output);
   if (!is_curve_output(out) && !is_mesh_output(out)) {
@@ -218,14 +221,8 @@ Input generate(const Cli& c) {
     in.dim = 2;
     return in;
   }
-  if (c.demo == "sphere") {
-    in.points = lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(c.points);
-  } else if (c.demo == "torus") {
-    in.points = lsr::Torus{lsr::Vec<3>(0, 0, 0), 1.0, 0.4}.sample(c.points);
-  } else {
-    in.points = lsr::Sphere{lsr::Vec<3>(-1.3, 0, 0), 1.0}.sample(c.points / 2);
-    for (const auto& q : lsr::Sphere{lsr::Vec<3>(1.3, 0, 0), 1.0}.sample(c.points - c.points / 2)) in.points.push_back(q);
-  }
+  // Irregular, as a scanner's points are.
+  in.points = lsr::sample_test_shape(lsr::make_test_shape(c.demo), c.points).points;
   return in;
 }
 

@@ -296,14 +296,14 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // owns the space between the two.
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
-                const Eigen::VectorXd& u, const Eigen::VectorXd& spacing, double trust_factor, double hole_radius,
+                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, double trust_factor, double hole_radius,
                 int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
   std::vector<Index> band_vertices;
   for (Eigen::Index v = 0; v < u.size(); ++v) {
-    if (std::abs(u[v]) < band_factor * spacing[v] + hole_radius) {
+    if (std::abs(u[v]) < band_factor * scale[v] + hole_radius) {
       band.push_back(mesh.vertices[v]);
       band_vertices.push_back(Index(v));
     }
@@ -314,7 +314,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
   for (std::size_t k = 0; k < band.size(); ++k) {
     const Index v = band_vertices[k];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * spacing[v] + hole_radius;
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] + hole_radius;
     values[v] = trusted ? f[k] : u[v];
   }
   r.surface = extract_zero_level_set(mesh, values);
@@ -344,11 +344,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);
   r.noise = median(sampling.noise);
   r.spacing = median(sampling.spacing);
-  const std::vector<double> point_scale = local_scales(sampling);
+  std::vector<double> point_scale = local_scales(sampling);
   clock.end("sampling");
 
   AdaptiveMeshOptions mo;
   mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min);
+  // A mesh coarser than the sampling (a clamp or a resolution asked for) resolves no finer
+  // than its own size: tolerances, pins and fits follow the coarser of the two.
+  for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);
   mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
   mo.h_max = std::max(o.h_max, mo.h_min);
   mo.grading = o.grading;
@@ -367,13 +370,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   data.query(mesh.vertices, dist, &nearest, o.threads);
   const std::size_t nv = mesh.vertices.size();
   // Per-vertex scales l and noise: those of the nearest data point.
-  Eigen::VectorXd spacing(nv), noise(nv);
+  Eigen::VectorXd scale(nv), noise(nv);
   for (std::size_t v = 0; v < nv; ++v) {
-    spacing[v] = point_scale[nearest[v]];
+    scale[v] = point_scale[nearest[v]];
     noise[v] = sampling.noise[nearest[v]];
   }
   const Eigen::VectorXd distance = Eigen::Map<const Eigen::VectorXd>(dist.data(), Eigen::Index(dist.size()));
-  const VertexCells cells = pin_cells(spacing, data.points().size(), dist, nearest, o.pin_factor);
+  const VertexCells cells = pin_cells(scale, data.points().size(), dist, nearest, o.pin_factor);
   Eigen::VectorXd d = distance;  // what drives the front: zero where it is pinned
   const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
   clock.end("distance");
@@ -387,10 +390,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   if (o.curvature_weight >= 0.0) {
     step.curvature_weight = o.curvature_weight;
   } else {
-    // Noise makes bumps of height sigma and width ~2 s; flattening them needs beta kappa >=
-    // alpha sigma, i.e. beta ~ 2 |alpha| s^2: the weight grows towards that as sigma nears s.
-    step.curvature_weights = std::abs(step.alpha) * spacing.cwiseProduct(spacing).cwiseProduct(
-        (o.curvature_factor + 2.0 * noise.cwiseQuotient(spacing).cwiseMin(1.0).array()).matrix());
+    // Noise makes bumps of height sigma and width ~2 l; flattening them needs beta kappa >=
+    // alpha sigma, i.e. beta ~ 2 |alpha| l^2: the weight grows towards that as sigma nears l.
+    step.curvature_weights = std::abs(step.alpha) * scale.cwiseProduct(scale).cwiseProduct(
+        (o.curvature_factor + 2.0 * noise.cwiseQuotient(scale).cwiseMin(1.0).array()).matrix());
     step.curvature_weight = std::abs(step.alpha) * o.curvature_factor * r.spacing * r.spacing;
   }
   step.solver_tolerance = o.solver_tolerance;
@@ -412,7 +415,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // Over a sampling hole the front spans up to hole_radius away from the data.
   Eigen::VectorXd front_tolerance(nv);
   for (std::size_t v = 0; v < nv; ++v) {
-    front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * spacing[v]) + o.gap_factor * spacing[v] + o.hole_radius;
+    front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * scale[v]) + o.gap_factor * scale[v] + o.hole_radius;
   }
   Eigen::VectorXd u(nv);
   if (custom_start) {
@@ -423,14 +426,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     }
   } else if (o.initial_front == InitialFront::tagged) {
     const double hole_radius = o.hole_radius;
-    u = tagged_start(mesh, distance, spacing, o.gap_factor, hole_radius, o.threads);
+    u = tagged_start(mesh, distance, scale, o.gap_factor, hole_radius, o.threads);
     r.tagged_start = u.size() > 0;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
     if (r.tagged_start && hole_radius > 0.0) {
       // The front only has to close the gap (and span holes): the attraction stops hole_radius
       // plus the gap below the start, so a cap over a sampling hole cannot tunnel inside.
       for (Eigen::Index v = 0; v < u.size(); ++v) {
-        if (u[v] < -(hole_radius + o.gap_factor * spacing[v])) d[v] = 0.0;
+        if (u[v] < -(hole_radius + o.gap_factor * scale[v])) d[v] = 0.0;
       }
     }
   } else {
@@ -518,7 +521,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, spacing, o.gap_factor, o.hole_radius, o.threads);
+    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
