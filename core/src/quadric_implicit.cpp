@@ -110,12 +110,8 @@ double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const V
   const Vec<D> local = f.frame * (x - centre);
   const Eigen::Matrix<double, D - 1, 1> t = local.template head<D - 1>();
   // Far along the tangent the quadric's extrapolation is not trusted: its curvature term fades
-  // beyond twice the fitted neighbourhood (sampling holes are spanned by tangent planes). The
-  // fade is quartic so that within the neighbourhood, where the blend evaluates the fit, it
-  // changes the height by less than 1/16 of the curvature term (a quadratic fade costs
-  // O(s^2 / R) there; measured 6e-5 on a unit sphere at 20k points).
-  const double x2 = t.squaredNorm() / std::pow(2.0 * f.reach, 2);
-  const double fade = 1.0 / (1.0 + x2 * x2);
+  // beyond twice the fitted neighbourhood (sampling holes are spanned by tangent planes).
+  const double fade = 1.0 / (1.0 + t.squaredNorm() / std::pow(2.0 * f.reach, 2));
   const Eigen::Matrix<double, D - 1, 1> ht = f.h * t;
   const double height = f.c0 + f.g.dot(t) + 0.5 * fade * t.dot(ht);
   const Eigen::Matrix<double, D - 1, 1> slope = f.g + fade * ht;

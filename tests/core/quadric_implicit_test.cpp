@@ -39,11 +39,11 @@ TEST(QuadricImplicit, SphereErrorIsTheFourthOrderTermOfItsNeighbourhood) {
   Points<3> normals;
   for (const auto& x : p) normals.push_back(x.normalized());
   const QuadricImplicit<3> f(index, normals, s.spacing);
-  // A fit's neighbourhood holds K = kFitNeighbours points, radius about r with pi r^2 rho = K;
-  // K random points lie within 2 r with overwhelming probability (a disc of radius 2 r holds 4 K
-  // on average), and a blended fit is evaluated within that radius of its centre. The height
+  // A fit's neighbourhood holds 30 points, radius about r with pi r^2 rho = 30; 30 random
+  // points lie within 2 r with overwhelming probability (a disc of radius 2 r holds 120 on
+  // average), and a blended fit is evaluated within that radius of its centre. The height
   // function's first term a quadric cannot follow is t^4 / (8 R^3).
-  const double r = std::sqrt(QuadricImplicit<3>::kFitNeighbours / (std::acos(-1.0) * n / (4 * std::acos(-1.0) * R * R)));
+  const double r = std::sqrt(30.0 / (std::acos(-1.0) * n / (4 * std::acos(-1.0) * R * R)));
   const double bound = std::pow(2 * r, 4) / (8 * R * R * R);
   Points<3> q;
   std::vector<double> truth;

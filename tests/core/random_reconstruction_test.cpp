@@ -5,10 +5,9 @@
 ///
 /// Bounds. Output vertices are projected onto the blended quadric fit, whose error on a
 /// surface of curvature radius R is the quartic term of the height function over a fit's
-/// reach, (2 r)^4 / (8 R^3) with pi r^2 rho = kFitNeighbours (quadric_implicit_test.cpp); facets of size up
+/// reach, (2 r)^4 / (8 R^3) with pi r^2 rho = 30 (quadric_implicit_test.cpp); facets of size up
 /// to twice the local scale s add their sagitta (2 s)^2 / (8 R) between vertices.
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/surface_distance.h"
 #include "lsrecon/core/surface_topology.h"
@@ -44,7 +43,7 @@ Outcome run(const TestShape& shape, const SampledShape& sample) {
 // The bound of the file comment for n points on area A, curvature radius R, scale s.
 double fit_bound(int n, double area, double R) {
   const double rho = n / area;
-  const double r = std::sqrt(QuadricImplicit<3>::kFitNeighbours / (kPi * rho));
+  const double r = std::sqrt(30.0 / (kPi * rho));
   const double s = std::sqrt(6.0 / (kPi * rho));
   return std::pow(2 * r, 4) / (8 * R * R * R) + 4 * s * s / (8 * R);
 }
@@ -105,7 +104,7 @@ TEST(RandomReconstruction, TenfoldDensityGradientKeepsTheTopology) {
 
 TEST(RandomReconstruction, NoisySphereIsSmootherThanItsNoise) {
   // sigma = 0.5% of the diagonal per coordinate: the data lie sigma from the sphere on
-  // average (sqrt(2 / pi) sigma in the normal direction); the fit averages up to 120 of them.
+  // average (sqrt(2 / pi) sigma in the normal direction); the fit averages 30-120 of them.
   const TestShape shape = make_test_shape("sphere");
   SamplingVariant v;
   v.noise = 0.005;

@@ -23,9 +23,8 @@ class QuadricImplicit {
   /// kFitNeighbours (1 + (sigma_i / (0.05 s_i))^2) points, at most kMaxFitNeighbours: its height
   /// error falls like sigma / sqrt(K) while the curvature bias grows like K^2 s^4 / R^3
   /// (measured on the noisy sphere: 30 points 1.4x the Chamfer of Poisson given true normals,
-  /// 100 points 0.8x). 18 rather than 30 on clean data: 1.1x less Chamfer on the 20k corpus,
-  /// 2x less on a 2k torus whose tube is only 3 spacings wide.
-  static constexpr int kFitNeighbours = D == 2 ? 10 : 18;
+  /// 100 points 0.8x).
+  static constexpr int kFitNeighbours = D == 2 ? 10 : 30;
   static constexpr int kMaxFitNeighbours = D == 2 ? 40 : 120;
   static constexpr int kBlendCentres = D == 2 ? 4 : 12;    ///< fits blended at a query
 
