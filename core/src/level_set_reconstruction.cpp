@@ -111,9 +111,9 @@ void check_options(const ReconstructionOptions& o) {
   auto factor = [&](double v, const char* name, double lo, double hi, const char* use) {
     if (!(v > lo && v <= hi)) bad(std::string(name) + " must be in (" + std::to_string(lo) + ", " + std::to_string(hi) + "]", use);
   };
-  factor(o.gap_factor, "gap_factor", 0.0, 20.0, "use 2 (local spacings)");
-  factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 1.5 (local spacings)");
-  factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local spacings)");
+  factor(o.gap_factor, "gap_factor", 0.0, 20.0, "use 2 (local scales)");
+  factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 2 (local scales)");
+  factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local scales)");
   factor(o.curvature_factor, "curvature_factor", -1e-300, 100.0, "use 0.25");
   if (!(o.hole_radius >= 0.0 && o.hole_radius < 0.5)) bad("hole_radius must be in [0, 0.5) (unit box)", "use 0 (no closing) or e.g. 0.06");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
