@@ -178,8 +178,8 @@ VertexCells pin_cells(const Eigen::VectorXd& scale, std::size_t points, const st
 }
 
 // A data point counts as reached once the moving front is within `reach` of it (u rises to 0
-// at the data when alpha > 0, falls to 0 when alpha < 0); its cell then stops moving.
-// Pinned cells stop moving: d := 0 there and the vertices are held.
+// at the data when alpha > 0, falls to 0 when alpha < 0); its cell then stops moving: d := 0
+// there and the vertices are held.
 template <int D>
 void pin_reached_data(const std::vector<Location<D>>& at, const VertexCells& cells,
                       const Eigen::VectorXd& u, double alpha, const std::vector<double>& reach,
@@ -425,15 +425,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
   } else if (o.initial_front == InitialFront::tagged) {
-    const double hole_radius = o.hole_radius;
-    u = tagged_start(mesh, distance, scale, o.gap_factor, hole_radius, o.threads);
+    u = tagged_start(mesh, distance, scale, o.gap_factor, o.hole_radius, o.threads);
     r.tagged_start = u.size() > 0;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
-    if (r.tagged_start && hole_radius > 0.0) {
+    if (r.tagged_start && o.hole_radius > 0.0) {
       // The front only has to close the gap (and span holes): the attraction stops hole_radius
       // plus the gap below the start, so a cap over a sampling hole cannot tunnel inside.
       for (Eigen::Index v = 0; v < u.size(); ++v) {
-        if (u[v] < -(hole_radius + o.gap_factor * scale[v])) d[v] = 0.0;
+        if (u[v] < -(o.hole_radius + o.gap_factor * scale[v])) d[v] = 0.0;
       }
     }
   } else {
@@ -510,16 +509,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.residual = best_residual * median_eps / box.scale();
   r.noise /= box.scale();
   r.spacing /= box.scale();
-  if (r.iterations > 0 || custom_start) {
-    // The best iterate as a signed distance: the fit band and the normals need one.
-    renormalize(mesh, best, ops.gradient_norms(best), band, o.threads);
-    clock.end("renormalize");
-  }
-  const Eigen::VectorXd gradient = ops.gradient * best;
-  const Points<D> normals = oriented_normals(sampling, at, gradient);
+  const Points<D> normals = oriented_normals(sampling, at, Eigen::VectorXd(ops.gradient * best));
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {
+    // The fit's band is measured in distances to the front: the best iterate as one.
+    renormalize(mesh, best, ops.gradient_norms(best), band, o.threads);
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
     attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.threads);
     clock.end("fit");

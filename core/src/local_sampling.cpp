@@ -73,18 +73,19 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
   LocalSampling<D> s;
-  data.query_k(p, k, s.neighbours, t);
+  std::vector<Index> neighbours;
+  data.query_k(p, k, neighbours, t);
   const long n = long(p.size());
   std::vector<double> spacing(p.size()), noise(p.size());
   s.normals.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
   for (long i = 0; i < n; ++i) {
-    const Index* nearest = &s.neighbours[std::size_t(i) * k];
+    const Index* nearest = &neighbours[std::size_t(i) * k];
     spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
     pca(p, nearest, k, noise[i], s.normals[i]);
   }
-  s.spacing = neighbourhood_median(spacing, s.neighbours, k, t);
-  s.noise = neighbourhood_median(noise, s.neighbours, k, t);
+  s.spacing = neighbourhood_median(spacing, neighbours, k, t);
+  s.noise = neighbourhood_median(noise, neighbours, k, t);
   return s;
 }
 
