@@ -231,11 +231,12 @@ double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd&
 // The signed distance to the boundary of the flooded vertices (> 0 in the flood); empty when
 // the flood is empty or everything.
 template <int D>
-Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const std::vector<char>& flooded, int threads) {
+Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
+                               double band, int threads) {
   Eigen::VectorXd u(Eigen::Index(flooded.size()));
   for (std::size_t v = 0; v < flooded.size(); ++v) u[v] = flooded[v] ? 1.0 : -1.0;
   if (u.minCoeff() > 0.0 || u.maxCoeff() < 0.0) return {};
-  renormalize(mesh, u, Eigen::VectorXd::Ones(u.size()), std::numeric_limits<double>::infinity(), threads);
+  renormalize(mesh, neighbours, u, band, threads);
   return u;
 }
 
@@ -245,17 +246,18 @@ Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const std::vector<cha
 // of radius H, which cannot pass a sampling hole narrower than H), then restricted to the
 // vertices farther than the gap. Empty when nothing is reachable (data against the walls).
 template <int D>
-Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
-                             double gap_factor, double hole_radius, int threads) {
+Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& distance,
+                             const Eigen::VectorXd& scale,
+                             double gap_factor, double hole_radius, double band, int threads) {
   const std::size_t n = mesh.vertices.size();
   std::vector<char> passable(n);
   for (std::size_t v = 0; v < n; ++v) passable[v] = distance[v] > hole_radius;
-  const Eigen::VectorXd deep = hole_radius > 0.0 ? flood_distance(mesh, flood_from_walls(mesh, passable), threads)
+  const Eigen::VectorXd deep = hole_radius > 0.0 ? flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads)
                                                  : Eigen::VectorXd();
   for (std::size_t v = 0; v < n; ++v) {
     passable[v] = distance[v] > gap_factor * scale[v] && (deep.size() == 0 || deep[v] > -hole_radius);
   }
-  return flood_distance(mesh, flood_from_walls(mesh, passable), threads);
+  return flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads);
 }
 
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
@@ -265,7 +267,7 @@ void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const 
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
   r.surface = extract_zero_level_set(mesh, values);
-  const Eigen::VectorXd g = ops.gradient * u;
+  const Eigen::VectorXd g = ops.gradient_of(u);
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
     const EdgePoint& e = r.surface.sources[i];
@@ -382,8 +384,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("distance");
 
   progress.update("setup", -1.0);
+  const VertexNeighbours neighbours = vertex_neighbours(mesh, o.threads);
   const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh),
-                                                   o.solver == LinearSolver::gmres_reference);
+                                                   o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
+  clock.end("operators");
   StepParameters step;
   step.alpha = o.alpha != 0.0 ? o.alpha : (o.initial_front == InitialFront::inside ? -2.0 : 2.0);
   step.time_step = o.time_step > 0.0 ? o.time_step : 0.2 / std::abs(step.alpha);
@@ -417,6 +421,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   for (std::size_t v = 0; v < nv; ++v) {
     front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * scale[v]) + o.gap_factor * scale[v] + o.hole_radius;
   }
+  // Renormalisation band. From the tagged start the front moves at most |alpha| dt interval d
+  // <= 0.4 (gap + 1) l between two renormalisations and the fit reads 3 l + H: 4 l + gap + H
+  // covers both. The sphere starts cross the whole box: there, every vertex.
+  const double band = o.initial_front == InitialFront::tagged && !custom_start
+                          ? (4.0 + o.gap_factor) * scale.maxCoeff() + o.hole_radius
+                          : std::numeric_limits<double>::infinity();
   Eigen::VectorXd u(nv);
   if (custom_start) {
     for (std::size_t i = 0; i < nv; ++i) u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
@@ -425,7 +435,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
   } else if (o.initial_front == InitialFront::tagged) {
-    u = tagged_start(mesh, distance, scale, o.gap_factor, o.hole_radius, o.threads);
+    u = tagged_start(mesh, neighbours, distance, scale, o.gap_factor, o.hole_radius, band, o.threads);
     r.tagged_start = u.size() > 0;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
     if (r.tagged_start && o.hole_radius > 0.0) {
@@ -448,10 +458,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   Eigen::VectorXd best = u;
   double best_residual = std::numeric_limits<double>::infinity();
   bool best_front_ok = false;
-  // Renormalise every vertex: a band of a few h_min is thinner than the coarse simplices the
-  // front crosses early on, and clamping there flattens u over whole simplices and stalls the
-  // front (measured). The exact distance everywhere costs one k-NN query per vertex.
-  const double band = std::numeric_limits<double>::infinity();
+  bool best_is_distance = false;
   try {
     for (int n = 1; n <= o.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
@@ -463,7 +470,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on.
-        front_distance = max_front_distance(renormalize(mesh, u, ops.gradient_norms(u), band, o.threads).front,
+        front_distance = max_front_distance(renormalize(mesh, neighbours, u, band, o.threads).front,
                                             d, front_tolerance);
         clock.end("renormalize");
       }
@@ -484,6 +491,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       if (residual < best_residual) {
         best_residual = residual;
         best = u;
+        best_is_distance = n % interval == 0;
         r.best_iteration = n;
         r.unreached_points = std::size_t(std::count_if(per_point.begin(), per_point.end(), [](double x) { return x > 1.0; }));
         best_front_ok = front_distance <= 1.0;
@@ -509,12 +517,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.residual = best_residual * median_eps / box.scale();
   r.noise /= box.scale();
   r.spacing /= box.scale();
-  const Points<D> normals = oriented_normals(sampling, at, Eigen::VectorXd(ops.gradient * best));
+  const Points<D> normals = oriented_normals(sampling, at, ops.gradient_of(best));
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
-    renormalize(mesh, best, ops.gradient_norms(best), band, o.threads);
+    if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
     attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.threads);
     clock.end("fit");

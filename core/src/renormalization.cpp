@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file renormalization.cpp
+/// @brief Closest-facet propagation along mesh edges, in Jacobi rounds: each round reads the
+/// previous one's closest facets only, so the result does not depend on the thread count.
 #include "lsrecon/core/renormalization.h"
 
-#include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/nearest_point_index.h"
 #include "lsrecon/core/point_simplex_distance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -15,10 +16,7 @@
 namespace lsr {
 namespace {
 
-// Candidates per vertex: the facets with the k nearest centroids. Facets near a vertex of a
-// conforming front are of similar size, so the closest facet is among them.
-constexpr int kCandidates2D = 8;
-constexpr int kCandidates3D = 8;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 template <int D>
 double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p) {
@@ -30,63 +28,190 @@ double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p) {
   }
 }
 
+// The nearest facet so far of every vertex; ties go to the lower facet index.
+struct Closest {
+  std::vector<double> distance;
+  std::vector<Index> facet;
+  bool improves(Index v, double d, Index f) const {
+    return d < distance[v] || (d == distance[v] && f < facet[v]);
+  }
+};
+
+// The vertices of the crossed simplices: both ends of the mesh edge under every front vertex
+// measured against the facets through that front vertex, whatever the band (they carry the
+// zero set). Returns the seeded vertices.
+template <int D>
+std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, Closest& c, int threads) {
+  const long nf = long(front.facets.size());
+  std::vector<std::array<double, 2 * D>> d(front.facets.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long f = 0; f < nf; ++f) {
+    for (int k = 0; k < D; ++k) {
+      const EdgePoint& e = front.sources[front.facets[f][k]];
+      d[f][2 * k] = facet_distance(front, Index(f), mesh.vertices[e.a]);
+      d[f][2 * k + 1] = facet_distance(front, Index(f), mesh.vertices[e.b]);
+    }
+  }
+  std::vector<Index> seeded;
+  for (Index f = 0; f < Index(nf); ++f) {
+    for (int k = 0; k < D; ++k) {
+      const EdgePoint& e = front.sources[front.facets[f][k]];
+      for (int end = 0; end < 2; ++end) {
+        const Index v = end == 0 ? e.a : e.b;
+        const double dv = d[f][2 * k + end];
+        if (!c.improves(v, dv, f)) continue;
+        if (c.facet[v] < 0) seeded.push_back(v);
+        c.distance[v] = dv;
+        c.facet[v] = f;
+      }
+    }
+  }
+  std::sort(seeded.begin(), seeded.end());
+  return seeded;
+}
+
+// Vertex w's best offer among the closest facets of its neighbours that changed in the last
+// round (each facet measured once).
+template <int D>
+std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
+                                    const Closest& c, const std::vector<char>& changed, Index w) {
+  std::array<Index, 48> tried{};
+  int n_tried = 0;
+  double best = c.distance[w];
+  Index best_facet = c.facet[w];
+  for (Index k = g.offsets[w]; k < g.offsets[w + 1]; ++k) {
+    if (!changed[g.neighbours[k]]) continue;
+    const Index f = c.facet[g.neighbours[k]];
+    if (f < 0 || f == best_facet || std::find(tried.begin(), tried.begin() + n_tried, f) != tried.begin() + n_tried) continue;
+    if (n_tried < int(tried.size())) tried[n_tried++] = f;
+    const double d = facet_distance(front, f, mesh.vertices[w]);
+    if (d < best || (d == best && f < best_facet)) {
+      best = d;
+      best_facet = f;
+    }
+  }
+  return {best, best_facet};
+}
+
+// Facets through each front vertex (CSR), for walking over the front.
+struct FacetsAround {
+  std::vector<Index> offsets, facets;
+};
+
+template <int D>
+FacetsAround facets_around(const LevelSetMesh<D>& front) {
+  FacetsAround a;
+  a.offsets.assign(front.vertices.size() + 1, 0);
+  for (const auto& f : front.facets) {
+    for (Index v : f) ++a.offsets[v + 1];
+  }
+  for (std::size_t v = 0; v < front.vertices.size(); ++v) a.offsets[v + 1] += a.offsets[v];
+  a.facets.resize(a.offsets.back());
+  std::vector<Index> fill(a.offsets.begin(), a.offsets.end() - 1);
+  for (Index f = 0; f < Index(front.facets.size()); ++f) {
+    for (Index v : front.facets[f]) a.facets[fill[v]++] = f;
+  }
+  return a;
+}
+
+// Where the facets' Voronoi regions narrow below an edge (inside a curved front), the closest
+// facet of a vertex may be no neighbour's closest, only next to one: walk over the front from
+// the propagated facet to facets sharing a vertex with it while that gets closer.
+template <int D>
+void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const FacetsAround& around, Closest& c,
+             int threads) {
+  const long n = long(mesh.vertices.size());
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+  for (long w = 0; w < n; ++w) {
+    Index f = c.facet[w];
+    if (f < 0) continue;
+    double best = c.distance[w];
+    for (Index previous = -1; previous != f;) {
+      previous = f;
+      for (Index v : front.facets[previous]) {
+        for (Index k = around.offsets[v]; k < around.offsets[v + 1]; ++k) {
+          const Index g = around.facets[k];
+          if (g == previous) continue;
+          const double d = facet_distance(front, g, mesh.vertices[w]);
+          if (d < best || (d == best && g < f)) {
+            best = d;
+            f = g;
+          }
+        }
+      }
+    }
+    c.distance[w] = best;
+    c.facet[w] = f;
+  }
+}
+
+template <int D>
+void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front, double band,
+               std::vector<Index> changed, Closest& c, int threads) {
+  std::vector<char> listed(mesh.vertices.size(), 0), is_changed(mesh.vertices.size(), 0);
+  std::vector<Index> candidates;
+  std::vector<std::pair<double, Index>> offer;
+  while (!changed.empty()) {
+    candidates.clear();
+    for (Index v : changed) is_changed[v] = 1;
+    for (Index v : changed) {
+      for (Index k = g.offsets[v]; k < g.offsets[v + 1]; ++k) {
+        const Index w = g.neighbours[k];
+        if (!listed[w]) {
+          listed[w] = 1;
+          candidates.push_back(w);
+        }
+      }
+    }
+    offer.resize(candidates.size());
+    const long n = long(candidates.size());
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
+    for (long i = 0; i < n; ++i) offer[i] = best_offer(mesh, g, front, c, is_changed, candidates[i]);
+    for (Index v : changed) is_changed[v] = 0;
+    changed.clear();
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const Index w = candidates[i];
+      listed[w] = 0;
+      const auto [d, f] = offer[i];
+      if (f == c.facet[w] || d >= band) continue;
+      c.distance[w] = d;
+      c.facet[w] = f;
+      changed.push_back(w);
+    }
+  }
+}
+
 }  // namespace
 
 template <int D>
-RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u,
-                                  const Eigen::VectorXd& gradient_norm, double band, int threads) {
+RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+                                     Eigen::VectorXd& u, double band, int threads) {
+  threads = threads > 0 ? threads : omp_get_max_threads();
   RenormalizationReport<D> report;
   const std::vector<double> values(u.data(), u.data() + u.size());
   report.front = extract_zero_level_set(mesh, values);
-  const LevelSetMesh<D>& front = report.front;
-  if (front.facets.empty()) return report;
+  if (report.front.facets.empty()) return report;
 
-  Points<D> centroids(front.facets.size());
-  for (std::size_t f = 0; f < front.facets.size(); ++f) {
-    Vec<D> c = Vec<D>::Zero();
-    for (Index v : front.facets[f]) c += front.vertices[v];
-    centroids[f] = c / double(D);
-  }
-  const NearestPointIndex<D> index(std::move(centroids));
-
-  // |u| / |grad u| is the first-order distance to the zero set; 2 * band leaves room for its
-  // error.
-  std::vector<Index> near;
-  Points<D> queries;
+  Closest c{std::vector<double>(mesh.vertices.size(), kInfinity), std::vector<Index>(mesh.vertices.size(), -1)};
+  propagate(mesh, neighbours, report.front, band, seed(mesh, report.front, c, threads), c, threads);
+  descend(mesh, report.front, facets_around(report.front), c, threads);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
-    if (std::abs(u[i]) < 2.0 * band * std::max(gradient_norm[i], 1e-12)) {
-      near.push_back(Index(i));
-      queries.push_back(mesh.vertices[i]);
-    }
+    // Beyond the band (or cut off from the front, which a connected mesh never is): +-band.
+    const double d = c.facet[i] >= 0 ? c.distance[i] : (std::isfinite(band) ? band : std::abs(u[i]));
+    u[i] = u[i] < 0.0 ? -d : d;
+    report.band_vertices += c.facet[i] >= 0;
   }
-  const int k = D == 2 ? kCandidates2D : kCandidates3D;
-  std::vector<Index> candidates;
-  index.query_k(queries, k, candidates, threads);
-  std::vector<double> distance(near.size());
-  const long n = long(near.size());
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
-  for (long q = 0; q < n; ++q) {
-    double best = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < k; ++j) {
-      best = std::min(best, facet_distance(front, candidates[std::size_t(q) * k + j], queries[q]));
-    }
-    distance[q] = best;
-  }
-
-  Eigen::VectorXd renormalized = u.unaryExpr([band](double x) { return x < 0.0 ? -band : band; });
-  for (std::size_t q = 0; q < near.size(); ++q) {
-    const double d = std::min(distance[q], band);
-    renormalized[near[q]] = u[near[q]] < 0.0 ? -d : d;
-  }
-  u = std::move(renormalized);
-  report.band_vertices = Index(std::count_if(distance.begin(), distance.end(),
-                                             [band](double d) { return d < band; }));
   return report;
 }
 
-template RenormalizationReport<2> renormalize<2>(const SimplexMesh<2>&, Eigen::VectorXd&,
-                                                   const Eigen::VectorXd&, double, int);
-template RenormalizationReport<3> renormalize<3>(const SimplexMesh<3>&, Eigen::VectorXd&,
-                                                   const Eigen::VectorXd&, double, int);
+template <int D>
+RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, Eigen::VectorXd& u, double band, int threads) {
+  return renormalize(mesh, vertex_neighbours(mesh, threads), u, band, threads);
+}
+
+template RenormalizationReport<2> renormalize<2>(const SimplexMesh<2>&, const VertexNeighbours&, Eigen::VectorXd&, double, int);
+template RenormalizationReport<3> renormalize<3>(const SimplexMesh<3>&, const VertexNeighbours&, Eigen::VectorXd&, double, int);
+template RenormalizationReport<2> renormalize<2>(const SimplexMesh<2>&, Eigen::VectorXd&, double, int);
+template RenormalizationReport<3> renormalize<3>(const SimplexMesh<3>&, Eigen::VectorXd&, double, int);
 
 }  // namespace lsr

@@ -6,7 +6,10 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <string>
+
+#include <omp.h>
 
 namespace lsr {
 namespace {
@@ -35,12 +38,15 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh) {
   SimplexGeometry<D> g;
   g.measure.resize(ns);
   g.gradients.resize(ns);
+  Index degenerate = -1;
+#pragma omp parallel for schedule(static)
   for (Index s = 0; s < ns; ++s) {
     const Eigen::Matrix<double, D, D> J = edge_matrix(mesh, s);
     const double det = J.determinant();
     if (!(std::abs(det) > 0.0)) {
-      throw InvalidInput("simplex " + std::to_string(s) + " is degenerate",
-                         "the mesh must not contain flat simplices");
+#pragma omp critical
+      degenerate = degenerate < 0 ? s : std::min(degenerate, s);
+      continue;
     }
     g.measure[s] = std::abs(det) / factorial(D);
     // lambda_k(x) = e_k . J^-1 (x - x0) for k >= 1, so grad lambda_k is row k-1 of J^-1.
@@ -51,6 +57,10 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh) {
       sum += g.gradients[s][k];
     }
     g.gradients[s][0] = -sum;
+  }
+  if (degenerate >= 0) {
+    throw InvalidInput("simplex " + std::to_string(degenerate) + " is degenerate",
+                       "the mesh must not contain flat simplices");
   }
 
   g.ball_offsets.assign(nv + 1, 0);
@@ -70,6 +80,45 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh) {
   return g;
 }
 
+template <int D>
+VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads) {
+  const std::size_t nv = mesh.vertices.size();
+  // Rows first hold every (vertex, other vertex of one of its simplices) pair, duplicates
+  // included; each row is then sorted, made unique and packed.
+  std::vector<Index> start(nv + 1, 0);
+  for (const auto& simplex : mesh.simplices) {
+    for (Index v : simplex) start[v + 1] += D;
+  }
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<Index> all(start[nv]);
+  std::vector<Index> fill(start.begin(), start.end() - 1);
+  for (const auto& simplex : mesh.simplices) {
+    for (Index v : simplex) {
+      for (Index w : simplex) {
+        if (w != v) all[fill[v]++] = w;
+      }
+    }
+  }
+  std::vector<Index> unique_count(nv);
+  const long n = long(nv);
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (long v = 0; v < n; ++v) {
+    auto first = all.begin() + start[v], last = all.begin() + start[v + 1];
+    std::sort(first, last);
+    unique_count[v] = Index(std::unique(first, last) - first);
+  }
+  VertexNeighbours g;
+  g.offsets.assign(nv + 1, 0);
+  for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] = g.offsets[v] + unique_count[v];
+  g.neighbours.resize(g.offsets[nv]);
+  for (std::size_t v = 0; v < nv; ++v) {
+    std::copy_n(all.begin() + start[v], unique_count[v], g.neighbours.begin() + g.offsets[v]);
+  }
+  return g;
+}
+
+template VertexNeighbours vertex_neighbours<2>(const SimplexMesh<2>&, int);
+template VertexNeighbours vertex_neighbours<3>(const SimplexMesh<3>&, int);
 template double signed_measure<2>(const SimplexMesh<2>&, Index);
 template double signed_measure<3>(const SimplexMesh<3>&, Index);
 template SimplexGeometry<2> compute_simplex_geometry<2>(const SimplexMesh<2>&);

@@ -2,7 +2,6 @@
 /// @file renormalization_test.cpp
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/analytic_shapes.h"
-#include "lsrecon/core/p1_operators.h"
 #include "lsrecon/core/renormalization.h"
 
 #include <gtest/gtest.h>
@@ -22,8 +21,7 @@ void check_renormalization(const Shape& shape, const Points<D>& samples, double 
     u[i] = 3.0 * exact[i] * (1.0 + exact[i]);  // same zero set, |grad u| far from 1
   }
   const double band = 5 * h;
-  const P1Operators<D> ops = assemble_p1_operators(m.mesh, compute_simplex_geometry(m.mesh));
-  const RenormalizationReport<D> r = renormalize(m.mesh, u, ops.gradient_norms(u), band);
+  const RenormalizationReport<D> r = renormalize(m.mesh, u, band);
   EXPECT_GT(r.band_vertices, 0);
   // The zero set moved by at most the interpolation error kappa L^2 / 8 (L = sqrt(D) h), so
   // the distances to it are within that of the exact ones.
@@ -53,7 +51,7 @@ TEST(Renormalization, LeavesAFieldWithoutZeroSetAlone) {
   AdaptiveMeshOptions o;
   const AdaptiveMesh<2> m = build_adaptive_mesh(NearestPointIndex<2>(c.sample(100)), o);
   Eigen::VectorXd u = Eigen::VectorXd::Constant(Eigen::Index(m.mesh.vertices.size()), 0.7);
-  EXPECT_TRUE(renormalize(m.mesh, u, Eigen::VectorXd::Ones(u.size()), 0.1).front.facets.empty());
+  EXPECT_TRUE(renormalize(m.mesh, u, 0.1).front.facets.empty());
   EXPECT_EQ(u.minCoeff(), 0.7);
 }
 

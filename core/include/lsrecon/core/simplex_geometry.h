@@ -24,6 +24,18 @@ struct SimplexMesh {
 template <int D>
 double signed_measure(const SimplexMesh<D>& mesh, Index s);
 
+/// @brief CSR vertex adjacency: the vertices sharing an edge with vertex i are
+/// neighbours[offsets[i] .. offsets[i + 1]), in ascending order.
+struct VertexNeighbours {
+  std::vector<Index> offsets;
+  std::vector<Index> neighbours;
+};
+
+/// @brief The edge graph of a mesh.
+/// @param threads threads for sorting the rows, 0 for all cores
+template <int D>
+VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads = 0);
+
 /// @brief Geometry of a fixed mesh, computed once: what eq. (10)-(14) of the paper sum over.
 template <int D>
 struct SimplexGeometry {
