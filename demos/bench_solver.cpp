@@ -50,11 +50,11 @@ double peak_rss_mib() {
 template <int D>
 void print(const Case& c, const lsr::ReconstructionResult<D>& r, double total, double error) {
   auto s = [&](const char* k) { return r.seconds.count(k) ? r.seconds.at(k) : 0.0; };
-  std::printf("%-16s %7d %5.0f %9d %9d %5d %4s %6.1f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.0f %6.2f\n",
+  std::printf("%-16s %7d %5.0f %9d %9d %5d %4s %6.1f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.2f %7.0f %6.2f\n",
               c.name.c_str(), c.points, 1.0 / r.h_min, r.mesh_vertices, r.mesh_simplices, r.iterations,
               r.status == lsr::ReconstructionStatus::converged ? "yes" : "no",
-              double(r.solver_iterations) / std::max(1, r.iterations), s("mesh"), s("distance"), s("setup"),
-              s("solve"), s("renormalize"), s("extract"), total, peak_rss_mib(), error / r.tolerance);
+              double(r.solver_iterations) / std::max(1, r.iterations), s("mesh"), s("distance"), s("operators"),
+              s("setup"), s("solve"), s("renormalize"), s("fit") + s("extract"), total, peak_rss_mib(), error / r.tolerance);
   std::fflush(stdout);
 }
 
@@ -118,9 +118,9 @@ int main(int argc, char** argv) {
     run_case(cases()[k]);
     return 0;
   }
-  std::printf("%-16s %7s %5s %9s %9s %5s %4s %6s %7s %7s %7s %7s %7s %7s %7s %7s %6s\n", "case", "points", "R",
-              "vertices", "simplices", "steps", "conv", "cg/st", "mesh_s", "dist_s", "setup_s", "solve_s",
-              "renorm_s", "extr_s", "total_s", "peakMiB", "err/h");
+  std::printf("%-16s %7s %5s %9s %9s %5s %4s %6s %7s %7s %7s %7s %7s %7s %7s %7s %7s %6s\n", "case", "points", "R",
+              "vertices", "simplices", "steps", "conv", "cg/st", "mesh_s", "dist_s", "oper_s", "setup_s", "solve_s",
+              "renorm_s", "fit_s", "total_s", "peakMiB", "err/h");
   std::fflush(stdout);
   for (std::size_t k = 0; k < cases().size(); ++k) {
     const pid_t child = fork();

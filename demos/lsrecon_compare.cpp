@@ -33,6 +33,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -139,6 +140,25 @@ void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertice
   }
 }
 
+// " stage 1.23 s" per stage taking 5% of the time or more, slowest first (no commas: CSV).
+std::string stage_breakdown(const std::map<std::string, double>& seconds) {
+  std::vector<std::pair<double, std::string>> stages;
+  double total = 0.0;
+  for (const auto& [stage, t] : seconds) {
+    stages.emplace_back(t, stage);
+    total += t;
+  }
+  std::sort(stages.rbegin(), stages.rend());
+  std::string out;
+  char text[64];
+  for (const auto& [t, stage] : stages) {
+    if (t < 0.05 * total) break;
+    std::snprintf(text, sizeof text, " %s %.2f s", stage.c_str(), t);
+    out += text;
+  }
+  return out;
+}
+
 struct Produced {
   pcl::PolygonMesh mesh;
   std::string note;
@@ -157,7 +177,7 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c,
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
-               std::to_string(ls.getStatus().iterations) + " steps";
+               std::to_string(ls.getStatus().iterations) + " steps;" + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
     if (method == "lsrecon") return out;
@@ -328,6 +348,34 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   return row;
 }
 
+// lsrecon / poisson8 (PCL normal estimation + Poisson depth 8) per case, where both ran.
+void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
+  std::map<std::string, std::map<std::string, std::pair<double, double>>> figures;  // case -> method -> (s, MiB)
+  for (const auto& row : rows) {
+    std::stringstream in(row);
+    std::string name, method, points, seconds, memory;
+    std::getline(in, name, ',');
+    std::getline(in, method, ',');
+    std::getline(in, points, ',');
+    std::getline(in, seconds, ',');
+    std::getline(in, memory, ',');
+    if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str())};
+  }
+  bool header = false;
+  for (const auto& [name, methods] : figures) {
+    if (!methods.count("lsrecon") || !methods.count("poisson8")) continue;
+    if (!header) {
+      md << "\n| case | time lsrecon / poisson8 | peak memory lsrecon / poisson8 |\n|---|--:|--:|\n";
+      header = true;
+    }
+    const auto& a = methods.at("lsrecon");
+    const auto& b = methods.at("poisson8");
+    char line[128];
+    std::snprintf(line, sizeof line, "| %s | %.2f | %.2f |\n", name.c_str(), a.first / b.first, a.second / b.second);
+    md << line;
+  }
+}
+
 void write_markdown(const std::string& path, const std::vector<std::string>& rows, const Settings& s) {
   std::ofstream md(path);
   md << "| case | method | points | seconds | peak MiB | Chamfer / diag | Hausdorff / diag | normal consistency | "
@@ -346,6 +394,7 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
     }
     md << '\n';
   }
+  write_ratios(md, rows);
   md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
      << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
      << s.variant.density_ratio << ". Seconds include normal estimation for the methods "

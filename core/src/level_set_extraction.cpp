@@ -19,8 +19,6 @@
 namespace lsr {
 namespace {
 
-// Keeps output vertices strictly inside their edge, so none sits on a mesh vertex.
-constexpr double kEdgeMargin = 1e-9;
 
 bool negative(double u) { return u < 0.0; }  // 0 counts as positive
 
@@ -36,7 +34,7 @@ bool even_permutation(const std::array<int, N>& p) {
 template <int D>
 class Marcher {
  public:
-  Marcher(const SimplexMesh<D>& mesh, const std::vector<double>& u) : mesh_(mesh), u_(u) {}
+  Marcher(const SimplexMesh<D>& mesh, const std::vector<double>& u, double margin) : mesh_(mesh), u_(u), margin_(margin) {}
 
   // Output vertex on mesh edge (a, b), created once per edge.
   Index edge_vertex(Index a, Index b) {
@@ -45,7 +43,7 @@ class Marcher {
     auto [it, inserted] = index_.try_emplace(key, Index(out_.vertices.size()));
     if (inserted) {
       double t = u_[a] / (u_[a] - u_[b]);  // u_a, u_b on opposite sides: denominator != 0
-      t = std::clamp(t, kEdgeMargin, 1.0 - kEdgeMargin);
+      t = std::clamp(t, margin_, 1.0 - margin_);
       out_.vertices.push_back((1.0 - t) * mesh_.vertices[a] + t * mesh_.vertices[b]);
       out_.sources.push_back({a, b, t});
     }
@@ -63,6 +61,7 @@ class Marcher {
  private:
   const SimplexMesh<D>& mesh_;
   const std::vector<double>& u_;
+  double margin_;
   std::unordered_map<std::uint64_t, Index> index_;
   LevelSetMesh<D> out_;
 };
@@ -114,7 +113,7 @@ void Marcher<D>::march(Index s) {
 }  // namespace
 
 template <int D>
-LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u) {
+LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u, double edge_margin) {
   if (u.size() != mesh.vertices.size()) {
     throw InvalidInput("level set field has " + std::to_string(u.size()) + " values for " +
                            std::to_string(mesh.vertices.size()) + " mesh vertices",
@@ -126,7 +125,7 @@ LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::ve
                          "the solver diverged or the field was not initialised");
     }
   }
-  Marcher<D> marcher(mesh, u);
+  Marcher<D> marcher(mesh, u, std::clamp(edge_margin, 1e-9, 0.25));
   for (Index s = 0; s < Index(mesh.simplices.size()); ++s) marcher.march(s);
   return marcher.take();
 }
@@ -162,7 +161,7 @@ std::vector<std::vector<Index>> closed_loops(const LevelSetMesh<2>& curves) {
   return loops;
 }
 
-template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&);
-template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&);
+template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, double);
+template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, double);
 
 }  // namespace lsr

@@ -29,6 +29,9 @@ namespace {
 // radius 0.45: 0.05 from the data's outermost point and from the box walls.
 constexpr double kDataRadius = 0.4;
 constexpr double kEnclosingRadius = 0.45;
+// Output vertices keep 1% of their mesh edge from its ends: moves them by at most that (the
+// fit's projection then puts them back on the surface) and keeps any two of them apart.
+constexpr double kOutputEdgeMargin = 0.01;
 
 class StageClock {
  public:
@@ -266,7 +269,7 @@ void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const 
                   const Eigen::VectorXd& u, double level) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
-  r.surface = extract_zero_level_set(mesh, values);
+  r.surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin);
   const Eigen::VectorXd g = ops.gradient_of(u);
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
@@ -319,7 +322,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] + hole_radius;
     values[v] = trusted ? f[k] : u[v];
   }
-  r.surface = extract_zero_level_set(mesh, values);
+  r.surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin);
   r.normals = fit.project(r.surface.vertices, threads);
 }
 

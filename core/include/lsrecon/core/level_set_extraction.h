@@ -27,9 +27,13 @@ struct LevelSetMesh {
 };
 
 /// @brief Extracts {u = 0}. u holds one value per mesh vertex.
+/// @param edge_margin output vertices stay this fraction of their edge (clamped to
+/// [1e-9, 0.25]) away from its ends: a mesh vertex just off the level set otherwise makes
+/// output vertices closer than any weld tolerance (seen at 200k points).
 /// @throw InvalidInput if u has the wrong size or a non-finite value.
 template <int D>
-LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u);
+LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u,
+                                       double edge_margin = 1e-9);
 
 /// @brief Orders the segments of a 2D zero set into closed loops, each a list of vertex
 /// indices in order (the last joins the first). The negative side is on the left: outer

@@ -19,6 +19,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/surface/reconstruction.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     int dimension = 0;       ///< 2 or 3, as used
     std::size_t skipped_points = 0;  ///< NaN / infinite points left out
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
+    std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };
 
   LevelSetReconstruction() { this->check_tree_ = false; }

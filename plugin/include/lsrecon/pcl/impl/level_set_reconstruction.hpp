@@ -108,6 +108,7 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       status_.residual = r.residual;
       status_.tolerance = r.tolerance;
       status_.residual_history = r.residual_history;
+      status_.stage_seconds = r.seconds;
     };
     if (status_.dimension == 2) {
       lsr::Points<2> planar;
