@@ -65,12 +65,15 @@ struct Candidates {
   std::vector<double> radii;
 };
 
+// The leaves created since `first` that a further bisection could concern: no simplex of size
+// h_min or less is ever bisected (every local size is at least h_min), so those need no
+// distance query; at 200k points they are most of the last pass.
 template <int D>
-Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first) {
+Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min) {
   Candidates<D> c;
   const auto& simplices = forest.simplices();
   for (Index s = first; s < Index(simplices.size()); ++s) {
-    if (!forest.is_leaf(s)) continue;
+    if (!forest.is_leaf(s) || forest.size(s) <= h_min) continue;
     Vec<D> centroid = Vec<D>::Zero();
     for (Index v : simplices[s].v) centroid += forest.vertices()[v];
     centroid /= double(D + 1);
@@ -145,7 +148,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   int passes = 0;
   // One pass per bisection level from the background cells down to h_min.
   const double expected_passes = std::max(1.0, std::ceil(D * std::log2(1.0 / (cells * o.h_min))));
-  Candidates<D> cand = leaves_from(forest, 0);
+  Candidates<D> cand = leaves_from(forest, 0, o.h_min);
   std::vector<double> dist;
   std::vector<Index> nearest;
   while (!cand.nodes.empty()) {
@@ -173,7 +176,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     check_predicted_size<D>(double(forest.vertices().size()),
                             double(forest.vertices().size()) - vertices_before,
                             largest_marked / std::pow(2.0, 1.0 / D), predicted);
-    cand = leaves_from(forest, first_new);
+    cand = leaves_from(forest, first_new, o.h_min);
   }
   AdaptiveMesh<D> out = leaf_mesh(std::move(forest));
   out.stats.passes = passes;

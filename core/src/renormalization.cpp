@@ -18,13 +18,15 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// Distance from p to facet f; `corner` (if given) becomes the local index of the facet vertex
+// that is the closest point, or -1.
 template <int D>
-double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p) {
+double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p, int* corner = nullptr) {
   const auto& v = front.facets[f];
   if constexpr (D == 2) {
-    return segment_distance(p, front.vertices[v[0]], front.vertices[v[1]]);
+    return segment_distance(p, front.vertices[v[0]], front.vertices[v[1]], corner);
   } else {
-    return triangle_distance(p, front.vertices[v[0]], front.vertices[v[1]], front.vertices[v[2]]);
+    return triangle_distance(p, front.vertices[v[0]], front.vertices[v[1]], front.vertices[v[2]], corner);
   }
 }
 
@@ -93,50 +95,85 @@ std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeig
   return {best, best_facet};
 }
 
-// Facets through each front vertex (CSR), for walking over the front.
-struct FacetsAround {
-  std::vector<Index> offsets, facets;
+// The front's adjacency: the facets through each front vertex (CSR) and, per facet, its D
+// neighbours across its sides (a side of a triangle is an edge, of a segment a vertex), -1
+// where the front is open (never, for a front extracted from a mesh).
+template <int D>
+struct FrontAdjacency {
+  std::vector<Index> offsets, around;
+  std::vector<std::array<Index, D>> next;
 };
 
 template <int D>
-FacetsAround facets_around(const LevelSetMesh<D>& front) {
-  FacetsAround a;
-  a.offsets.assign(front.vertices.size() + 1, 0);
+FrontAdjacency<D> front_adjacency(const LevelSetMesh<D>& front, int threads) {
+  FrontAdjacency<D> adjacency;
+  auto& offsets = adjacency.offsets;
+  auto& around = adjacency.around;
+  offsets.assign(front.vertices.size() + 1, 0);
   for (const auto& f : front.facets) {
-    for (Index v : f) ++a.offsets[v + 1];
+    for (Index v : f) ++offsets[v + 1];
   }
-  for (std::size_t v = 0; v < front.vertices.size(); ++v) a.offsets[v + 1] += a.offsets[v];
-  a.facets.resize(a.offsets.back());
-  std::vector<Index> fill(a.offsets.begin(), a.offsets.end() - 1);
+  for (std::size_t v = 0; v < front.vertices.size(); ++v) offsets[v + 1] += offsets[v];
+  around.resize(offsets.back());
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
   for (Index f = 0; f < Index(front.facets.size()); ++f) {
-    for (Index v : front.facets[f]) a.facets[fill[v]++] = f;
+    for (Index v : front.facets[f]) around[fill[v]++] = f;
   }
-  return a;
+  const long nf = long(front.facets.size());
+  auto& next = adjacency.next;
+  next.resize(front.facets.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long f = 0; f < nf; ++f) {
+    const auto& v = front.facets[f];
+    for (int k = 0; k < D; ++k) {
+      // The side opposite vertex k: vertex k itself for a segment, the other two for a triangle.
+      const Index a = D == 2 ? v[k] : v[(k + 1) % D];
+      const Index b = D == 2 ? v[k] : v[(k + 2) % D];
+      next[f][k] = -1;
+      for (Index e = offsets[a]; e < offsets[a + 1]; ++e) {
+        const Index g = around[e];
+        const auto& w = front.facets[g];
+        if (g != Index(f) && std::find(w.begin(), w.end(), b) != w.end()) next[f][k] = g;
+      }
+    }
+  }
+  return adjacency;
 }
 
 // Where the facets' Voronoi regions narrow below an edge (inside a curved front), the closest
 // facet of a vertex may be no neighbour's closest, only next to one: walk over the front from
-// the propagated facet to facets sharing a vertex with it while that gets closer.
+// the propagated facet across its sides while that gets closer and, where the nearest point
+// is a corner of the facet, to the facets around that corner (a side walk can stop there
+// while a facet through the corner is closer).
 template <int D>
-void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const FacetsAround& around, Closest& c,
+void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const FrontAdjacency<D>& adjacency, Closest& c,
              int threads) {
   const long n = long(mesh.vertices.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (long w = 0; w < n; ++w) {
     Index f = c.facet[w];
     if (f < 0) continue;
-    double best = c.distance[w];
+    const Vec<D>& p = mesh.vertices[w];
+    int corner = -1;
+    double best = facet_distance(front, f, p, &corner);
+    auto offer = [&](Index g) {
+      int g_corner = -1;
+      const double d = facet_distance(front, g, p, &g_corner);
+      if (d < best) {
+        best = d;
+        f = g;
+        corner = g_corner;
+      }
+    };
     for (Index previous = -1; previous != f;) {
       previous = f;
-      for (Index v : front.facets[previous]) {
-        for (Index k = around.offsets[v]; k < around.offsets[v + 1]; ++k) {
-          const Index g = around.facets[k];
-          if (g == previous) continue;
-          const double d = facet_distance(front, g, mesh.vertices[w]);
-          if (d < best || (d == best && g < f)) {
-            best = d;
-            f = g;
-          }
+      for (Index g : adjacency.next[previous]) {
+        if (g >= 0) offer(g);
+      }
+      if (previous == f && corner >= 0) {
+        const Index v = front.facets[f][corner];
+        for (Index k = adjacency.offsets[v]; k < adjacency.offsets[v + 1]; ++k) {
+          if (adjacency.around[k] != f) offer(adjacency.around[k]);
         }
       }
     }
@@ -194,7 +231,7 @@ RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNei
 
   Closest c{std::vector<double>(mesh.vertices.size(), kInfinity), std::vector<Index>(mesh.vertices.size(), -1)};
   propagate(mesh, neighbours, report.front, band, seed(mesh, report.front, c, threads), c, threads);
-  descend(mesh, report.front, facets_around(report.front), c, threads);
+  descend(mesh, report.front, front_adjacency(report.front, threads), c, threads);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     // Beyond the band (or cut off from the front, which a connected mesh never is): +-band.
     const double d = c.facet[i] >= 0 ? c.distance[i] : (std::isfinite(band) ? band : std::abs(u[i]));
