@@ -45,6 +45,9 @@ SHAPE   generated clouds: i.i.d. random samples of sphere torus double-torus tri
 options (lengths are in the unit box the data is mapped into: its bounding ball has radius 0.4)
   --resolution R                1/h_min, same mesh size everywhere near the data;
                                 0 = follow the local sampling spacing             (default 0)
+  --max-resolution R            cap on the local resolution (finer = more time,
+                                memory, and closer sheets told apart);
+                                0 = 256 in 3D, 4096 in 2D                         (default 0)
   --max-size H                  coarsest mesh size                                (default 0.125)
   --grading C                   mesh grading; smaller = wider fine band           (default 2)
   --alpha A                     attraction; 0 = +2 (enclose), -2 (inside)         (default 0)
@@ -135,6 +138,10 @@ Cli parse(int argc, char** argv) {
       const double r = number(a, v, 0, 1e5);
       if (r > 0 && r < 4) usage_error("--resolution must be 0 (automatic) or at least 4");
       s.h_min = r > 0 ? 1.0 / r : 0.0;
+    } else if (a == "--max-resolution") {
+      const double r = number(a, v, 0, 1e5);
+      if (r > 0 && r < 4) usage_error("--max-resolution must be 0 (automatic) or at least 4");
+      s.max_resolution = r;
     } else if (a == "--max-size") {
       s.h_max = number(a, v, 1e-4, 1);
     } else if (a == "--grading") {

@@ -85,11 +85,12 @@ std::vector<double> local_scales(const LocalSampling<D>& s) {
   return l;
 }
 
-// Mesh size near each point: its scale, clamped to what 2 cores handle, or the size asked for.
+// Mesh size near each point: its scale, clamped to [1 / max_resolution, 1/64 (2D) or 1/32
+// (3D)], or the size asked for.
 template <int D>
-std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fixed) {
-  const double lo = D == 2 ? 1.0 / 4096 : 1.0 / 512;
-  const double hi = D == 2 ? 1.0 / 64 : 1.0 / 32;
+std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fixed, double max_resolution) {
+  const double lo = 1.0 / (max_resolution > 0.0 ? max_resolution : D == 2 ? 4096.0 : 256.0);
+  const double hi = std::max(lo, D == 2 ? 1.0 / 64 : 1.0 / 32);
   std::vector<double> h(scale.size());
   for (std::size_t i = 0; i < h.size(); ++i) h[i] = fixed > 0.0 ? fixed : std::clamp(scale[i], lo, hi);
   return h;
@@ -107,6 +108,9 @@ Index memory_limited_vertices() {
 void check_options(const ReconstructionOptions& o) {
   auto bad = [](const std::string& what, const std::string& hint) { throw InvalidInput(what, hint); };
   if (!(o.h_min >= 0.0 && o.h_min < 1.0)) bad("h_min must be in [0, 1)", "use 0 (automatic) or e.g. 1/128");
+  if (!(o.max_resolution == 0.0 || (o.max_resolution >= 4.0 && o.max_resolution <= 1e5))) {
+    bad("max_resolution must be 0 (automatic) or in [4, 1e5]", "use 0 (256 in 3D, 4096 in 2D) or e.g. 512");
+  }
   if (!std::isfinite(o.alpha)) bad("alpha is not finite", "use 0 (automatic), 2 or -2");
   if (!std::isfinite(o.curvature_weight)) bad("curvature_weight is not finite", "use -1 (automatic)");
   if (!(o.time_step >= 0.0 && o.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (automatic: 0.2 / |alpha|)");
@@ -353,7 +357,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("sampling");
 
   AdaptiveMeshOptions mo;
-  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min);
+  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min, o.max_resolution);
   // A mesh coarser than the sampling (a clamp or a resolution asked for) resolves no finer
   // than its own size: tolerances, pins and fits follow the coarser of the two.
   for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);

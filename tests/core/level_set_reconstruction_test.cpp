@@ -256,6 +256,21 @@ TEST(LevelSetReconstruction, RejectsAlphaOfTheWrongSignForTheStart) {
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
 }
 
+// The cap binds where the sampling is finer than it: a cap of 16 on a circle sampled every 1/800
+// of the box makes every local size 1/16 (the upper clamp follows the cap); absurd caps are refused.
+TEST(LevelSetReconstruction, MaxResolutionCapsTheLocalMeshSize) {
+  const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(2000);
+  const auto fine = reconstruct<2>(data);
+  ReconstructionOptions o;
+  o.max_resolution = 16;
+  const auto capped = reconstruct<2>(data, o);
+  EXPECT_LT(fine.h_min, 1.0 / 16);
+  EXPECT_EQ(capped.h_min, 1.0 / 16);
+  EXPECT_LT(capped.mesh_vertices, fine.mesh_vertices);
+  o.max_resolution = 2;
+  EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+}
+
 TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {
   const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(1000);
   ReconstructionOptions o;
