@@ -504,7 +504,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
         best_front_ok = front_distance <= 1.0;
       }
       clock.end("stopping test");
-      if (best_residual <= 1.0) {
+      // Within tolerance; or, if asked, as good as a stall would leave it (below) without
+      // waiting for the stall.
+      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.unreached_fraction * double(at.size());
+      if (best_residual <= 1.0 || (o.stop_when_few_unreached && r.best_iteration == n && few_unreached)) {
         r.status = ReconstructionStatus::converged;
         break;
       }
@@ -512,9 +515,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
         // Stalled: the front no longer gets closer to the last points. Curvature holds it short
         // of the tip of a sharp concave crease, pinned cells short of a slit between close
         // sheets; the fit places the surface there. A few such points do not make the run fail.
-        if (best_front_ok && double(r.unreached_points) <= o.unreached_fraction * double(at.size())) {
-          r.status = ReconstructionStatus::converged;
-        }
+        if (few_unreached) r.status = ReconstructionStatus::converged;
         break;
       }
     }

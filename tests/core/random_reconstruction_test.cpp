@@ -29,9 +29,9 @@ struct Outcome {
   std::vector<int> genus;  // sorted
 };
 
-Outcome run(const TestShape& shape, const SampledShape& sample) {
+Outcome run(const TestShape& shape, const SampledShape& sample, const ReconstructionOptions& options = {}) {
   Outcome o;
-  o.r = reconstruct<3>(sample.points);
+  o.r = reconstruct<3>(sample.points, options);
   o.topology = analyze_surface(o.r.surface.vertices, o.r.surface.facets);
   o.distances = compare_to_truth(o.r.surface.vertices, o.r.surface.facets, shape.sdf,
                                  sample_implicit_surface(shape.sdf, shape.lo, shape.hi, 20000, 3), 20000);
@@ -100,6 +100,22 @@ TEST(RandomReconstruction, TenfoldDensityGradientKeepsTheTopology) {
   EXPECT_EQ(o.genus, std::vector<int>{1});
   // The sparse end has a tenth of the mean density's ~ 2x: n / 5.5 points' worth.
   EXPECT_LE(o.distances.hausdorff, fit_bound(5000 / 5.5, 4 * kPi * kPi * 0.4, 0.4));
+}
+
+// The double torus's grooves hold the last points back for many steps: stopping as soon as at
+// most 1% of them are unreached must take fewer steps, converge, and keep genus 2.
+TEST(RandomReconstruction, StoppingWhenFewAreUnreachedSavesStepsOnACreasedShape) {
+  const TestShape shape = make_test_shape("double-torus");
+  const SampledShape sample = sample_test_shape(shape, 5000);
+  const Outcome waited = run(shape, sample);
+  ReconstructionOptions o;
+  o.stop_when_few_unreached = true;
+  const Outcome early = run(shape, sample, o);
+  EXPECT_EQ(early.r.status, ReconstructionStatus::converged);
+  EXPECT_LT(early.r.iterations, waited.r.iterations);
+  EXPECT_LE(early.r.unreached_points, std::size_t(0.01 * 5000));
+  EXPECT_EQ(early.genus, std::vector<int>{2});
+  EXPECT_TRUE(early.topology.watertight);
 }
 
 TEST(RandomReconstruction, NoisySphereIsSmootherThanItsNoise) {
