@@ -325,7 +325,7 @@ template <int D>
 void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   if (!quiet) {
     std::fputc('\n', stderr);
-    for (const auto& [stage, seconds] : r.seconds) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), seconds);
+    for (const auto& stage : r.stages) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), r.seconds.at(stage));
   }
   if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
     std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "

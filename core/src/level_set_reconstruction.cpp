@@ -35,15 +35,17 @@ constexpr double kOutputEdgeMargin = 0.01;
 
 class StageClock {
  public:
-  explicit StageClock(std::map<std::string, double>& seconds) : seconds_(seconds) {}
+  StageClock(std::map<std::string, double>& seconds, std::vector<std::string>& order) : seconds_(seconds), order_(order) {}
   void end(const std::string& stage) {
     const auto now = std::chrono::steady_clock::now();
+    if (!seconds_.count(stage)) order_.push_back(stage);
     seconds_[stage] += std::chrono::duration<double>(now - start_).count();
     start_ = now;
   }
 
  private:
   std::map<std::string, double>& seconds_;
+  std::vector<std::string>& order_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
@@ -335,7 +337,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
   ReconstructionResult<D> r;
-  StageClock clock(r.seconds);
+  StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
   r.input_points = input.size();
   std::vector<std::size_t> kept;  // input index of each valid point
@@ -390,11 +392,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
   clock.end("distance");
 
-  progress.update("setup", -1.0);
+  progress.update("operators", -1.0);
   const VertexNeighbours neighbours = vertex_neighbours(mesh, o.threads);
   const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh),
                                                    o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
   clock.end("operators");
+  progress.update("setup", -1.0);
   StepParameters step;
   step.alpha = o.alpha != 0.0 ? o.alpha : (o.initial_front == InitialFront::inside ? -2.0 : 2.0);
   step.time_step = o.time_step > 0.0 ? o.time_step : 0.2 / std::abs(step.alpha);

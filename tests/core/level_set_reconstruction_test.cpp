@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -269,6 +270,16 @@ TEST(LevelSetReconstruction, MaxResolutionCapsTheLocalMeshSize) {
   EXPECT_LT(capped.mesh_vertices, fine.mesh_vertices);
   o.max_resolution = 2;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+}
+
+TEST(LevelSetReconstruction, StagesAreListedOnceInPipelineOrder) {
+  const auto r = reconstruct<2>(Circle{Vec<2>(0, 0), 1.0}.sample(500));
+  ASSERT_EQ(r.stages.size(), r.seconds.size());
+  const std::vector<std::string> first = {"normalize", "sampling", "mesh", "distance", "operators", "setup", "solve"};
+  ASSERT_GE(r.stages.size(), first.size());
+  EXPECT_EQ(std::vector<std::string>(r.stages.begin(), r.stages.begin() + first.size()), first);
+  for (const auto& stage : r.stages) EXPECT_EQ(std::count(r.stages.begin(), r.stages.end(), stage), 1) << stage;
+  EXPECT_EQ(r.stages.back(), "fit");
 }
 
 TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {

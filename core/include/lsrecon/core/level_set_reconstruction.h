@@ -157,6 +157,7 @@ struct ReconstructionResult {
   std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite
   long solver_iterations = 0;       ///< linear-solver iterations, summed over the steps
   std::map<std::string, double> seconds;  ///< wall time per stage
+  std::vector<std::string> stages;        ///< the keys of `seconds` in the order they first ran
 };
 
 /// @brief Reconstructs from points (#N, any scale).
