@@ -58,6 +58,8 @@ options (lengths are in the unit box the data is mapped into: its bounding ball 
                                 0 = one local sampling spacing                    (default 0)
   --hole-radius H               experimental: span sampling holes up to H          (default 0)
   --no-fit                      output the front itself, not the fit through the data
+  --keep-outliers               keep isolated points (nearest neighbour farther than
+                                3 local spacings); by default they are left out
   --renormalization-interval K  0 = automatic                                     (default 0)
   --init tagged|enclose|inside  start hugging the data from outside (flood from the
                                 box walls), on a sphere around it or inside it    (default tagged)
@@ -123,6 +125,10 @@ Cli parse(int argc, char** argv) {
     }
     if (a == "--no-fit") {
       c.solver.fit_surface = false;
+      continue;
+    }
+    if (a == "--keep-outliers") {
+      c.solver.outlier_factor = 0.0;
       continue;
     }
     if (a.rfind("--", 0) != 0) {
@@ -294,6 +300,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
     j << "{\n  \"input\": \"" << (c.demo.empty() ? c.input : "demo:" + c.demo) << "\",\n"
       << "  \"input_points\": " << in.points.size() + in.skipped << ",\n"
       << "  \"skipped_points\": " << in.skipped + r.skipped_points << ",\n"
+      << "  \"outlier_points\": " << r.outlier_points << ",\n"
       << "  \"dimension\": " << D << ",\n  \"h_min\": " << r.h_min << ",\n"
       << "  \"mesh_vertices\": " << r.mesh_vertices << ",\n  \"mesh_simplices\": " << r.mesh_simplices << ",\n"
       << "  \"time_steps\": " << r.iterations << ",\n  \"best_step\": " << r.best_iteration << ",\n"
@@ -326,6 +333,10 @@ void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   if (!quiet) {
     std::fputc('\n', stderr);
     for (const auto& stage : r.stages) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), r.seconds.at(stage));
+  }
+  if (r.outlier_points > 0) {
+    std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than 3 local spacings); "
+                         "--keep-outliers keeps them\n", r.outlier_points);
   }
   if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
     std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "

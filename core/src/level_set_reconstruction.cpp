@@ -77,6 +77,23 @@ void require_spanning(const Points<D>& points) {
   }
 }
 
+// Drops the isolated points (nearest distinct neighbour beyond `factor` local spacings) from
+// points and kept; true if there were any.
+template <int D>
+bool drop_isolated(const LocalSampling<D>& s, double factor, Points<D>& points, std::vector<std::size_t>& kept) {
+  if (factor <= 0.0) return false;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (s.gap[i] > factor * s.spacing[i]) continue;
+    points[n] = points[i];
+    kept[n++] = kept[i];
+  }
+  if (n == points.size()) return false;
+  points.resize(n);
+  kept.resize(n);
+  return true;
+}
+
 // The local scale l_i = max(s_i, 1.5 noise_i): what the sampling resolves, but not the noise
 // (finer than the noise makes islands; measured: 5 loops on a noisy circle). Every length of
 // the solver is a multiple of it.
@@ -129,6 +146,9 @@ void check_options(const ReconstructionOptions& o) {
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
   if (!(o.unreached_fraction >= 0.0 && o.unreached_fraction < 1.0)) bad("unreached_fraction must be in [0, 1)", "use 0.01");
+  if (!(o.outlier_factor == 0.0 || (o.outlier_factor >= 1.0 && o.outlier_factor <= 1e3))) {
+    bad("outlier_factor must be 0 (keep every point) or in [1, 1000]", "use 3");
+  }
   if (o.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from the machine's memory)");
   if (!(o.solver_tolerance > 0.0 && o.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
   if (o.initial_front != InitialFront::inside && o.alpha < 0.0) {
@@ -344,15 +364,23 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   for (std::size_t i = 0; i < input.size(); ++i) {
     if (input[i].allFinite()) kept.push_back(i);
   }
-  const Points<D> points = drop_non_finite(input);
+  Points<D> points = drop_non_finite(input);
   r.skipped_points = input.size() - points.size();
   require_spanning(points);
-  const auto box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
-  const NearestPointIndex<D> data(box.to_unit(points));
+  auto box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
+  NearestPointIndex<D> data(box.to_unit(points));
   clock.end("normalize");
 
   progress.update("sampling", -1.0);
-  const LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);
+  if (drop_isolated(sampling, o.outlier_factor, points, kept)) {
+    // The box and every scale follow the data without them.
+    r.outlier_points = input.size() - r.skipped_points - points.size();
+    require_spanning(points);
+    box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
+    data = NearestPointIndex<D>(box.to_unit(points));
+    sampling = estimate_local_sampling(data, o.threads);
+  }
   r.noise = median(sampling.noise);
   r.spacing = median(sampling.spacing);
   std::vector<double> point_scale = local_scales(sampling);

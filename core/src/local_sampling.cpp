@@ -78,10 +78,12 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   const long n = long(p.size());
   std::vector<double> spacing(p.size()), noise(p.size());
   s.normals.resize(p.size());
+  s.gap.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
   for (long i = 0; i < n; ++i) {
     const Index* nearest = &neighbours[std::size_t(i) * k];
     spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
+    s.gap[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), 1);
     pca(p, nearest, k, noise[i], s.normals[i]);
   }
   s.spacing = neighbourhood_median(spacing, neighbours, k, t);

@@ -37,6 +37,8 @@ Outcome run(const TestShape& shape, const SampledShape& sample, const Reconstruc
                                  sample_implicit_surface(shape.sdf, shape.lo, shape.hi, 20000, 3), 20000);
   o.genus = o.topology.genus;
   std::sort(o.genus.begin(), o.genus.end());
+  // Genuine samples are never isolated: on a surface the nearest neighbour is within a spacing.
+  if (options.outlier_factor > 0.0) EXPECT_EQ(o.r.outlier_points, 0u);
   return o;
 }
 
@@ -116,6 +118,29 @@ TEST(RandomReconstruction, StoppingWhenFewAreUnreachedSavesStepsOnACreasedShape)
   EXPECT_LE(early.r.unreached_points, std::size_t(0.01 * 5000));
   EXPECT_EQ(early.genus, std::vector<int>{2});
   EXPECT_TRUE(early.topology.watertight);
+}
+
+// Scanner outliers, far from the surface and from each other: left out, reported, given no
+// normal; kept, each would become a bubble of its own.
+TEST(RandomReconstruction, IsolatedOutliersAreLeftOutNotWrapped) {
+  const TestShape shape = make_test_shape("torus");
+  Points<3> points = sample_test_shape(shape, 4000).points;
+  const Points<3> outliers = {Vec<3>(0.0, 0.0, 0.9), Vec<3>(1.5, 1.5, -0.8), Vec<3>(-1.6, 0.2, 0.7),
+                              Vec<3>(0.3, -1.7, 0.0), Vec<3>(0.0, 0.0, -0.9)};
+  points.insert(points.end(), outliers.begin(), outliers.end());
+  const auto r = reconstruct<3>(points);
+  EXPECT_EQ(r.outlier_points, outliers.size());
+  const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
+  EXPECT_EQ(t.genus, std::vector<int>{1});
+  EXPECT_TRUE(t.watertight);
+  for (std::size_t i = points.size() - outliers.size(); i < points.size(); ++i) {
+    EXPECT_FALSE(r.point_normals[i].allFinite()) << i;
+  }
+  ReconstructionOptions keep;
+  keep.outlier_factor = 0.0;
+  const auto kept = reconstruct<3>(points, keep);
+  EXPECT_EQ(kept.outlier_points, 0u);
+  EXPECT_GT(analyze_surface(kept.surface.vertices, kept.surface.facets).genus.size(), 1u);
 }
 
 TEST(RandomReconstruction, NoisySphereIsSmootherThanItsNoise) {

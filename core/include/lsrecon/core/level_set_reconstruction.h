@@ -53,6 +53,14 @@ struct ReconstructionOptions {
   /// Chamfer distance at 0.2x that of Poisson depth 8 with true normals (measured); sheets
   /// closer than about 2.4 / max_resolution are no longer told apart.
   double max_resolution = 0.0;
+  /// A point whose nearest distinct neighbour is farther than outlier_factor local spacings
+  /// (the median spacing of its neighbourhood) is an isolated outlier and left out; 0 keeps
+  /// every point. A scanner outlier left in becomes a small closed bubble of its own (10
+  /// outliers among 20k torus points gave 11 components; with a factor of 4, one outlier
+  /// 3-4 spacings off the surface still pinched off; measured). On the test corpus (9 shapes;
+  /// clean, noisy, 10x density, holes; 2k-200k points) the largest ratio of a genuine point
+  /// is 2.5.
+  double outlier_factor = 3.0;
   double h_max = 1.0 / 8;     ///< coarsest mesh size
   double grading = 2.0;       ///< see AdaptiveMeshOptions::grading
   double alpha = 0.0;         ///< attraction weight; 0: +2 from outside, -2 inside
@@ -155,6 +163,7 @@ struct ReconstructionResult {
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;
   std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite
+  std::size_t outlier_points = 0;  ///< isolated points left out (see outlier_factor)
   long solver_iterations = 0;       ///< linear-solver iterations, summed over the steps
   std::map<std::string, double> seconds;  ///< wall time per stage
   std::vector<std::string> stages;        ///< the keys of `seconds` in the order they first ran

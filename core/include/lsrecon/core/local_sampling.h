@@ -27,6 +27,7 @@ struct LocalSampling {
   std::vector<double> spacing;  ///< k-th distinct neighbour distance, median-filtered
   std::vector<double> noise;    ///< sqrt of the smallest PCA eigenvalue of the neighbourhood, median-filtered
   Points<D> normals;            ///< unit PCA normal of the neighbourhood, unoriented
+  std::vector<double> gap;      ///< distance to the nearest distinct neighbour, raw (not filtered)
   static constexpr int kNeighbours = 16;  ///< neighbourhood size, the point itself included
   static constexpr int kSpacingRank = D == 2 ? 2 : 6;  ///< k of the spacing rule
 };

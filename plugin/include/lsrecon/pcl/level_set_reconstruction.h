@@ -51,6 +51,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     double tolerance = 0.0;  ///< the stopping tolerance, cloud units
     int dimension = 0;       ///< 2 or 3, as used
     std::size_t skipped_points = 0;  ///< NaN / infinite points left out
+    std::size_t outlier_points = 0;  ///< isolated points left out (no input normal either)
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
     std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };
@@ -65,6 +66,10 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// and memory and tells closer sheets apart (about 2.4 / resolution).
   void setMaximumResolution(double resolution) { options_.max_resolution = resolution; }
   double getMaximumResolution() const { return options_.max_resolution; }
+  /// @brief Isolated points, whose nearest neighbour is farther than this many local spacings,
+  /// are left out (default 3; 0 keeps every point).
+  void setOutlierFactor(double factor) { options_.outlier_factor = factor; }
+  double getOutlierFactor() const { return options_.outlier_factor; }
   /// @brief Coarsest mesh size in the unit box (default 1/8).
   void setMaximumSize(double h_max) { options_.h_max = h_max; }
   double getMaximumSize() const { return options_.h_max; }

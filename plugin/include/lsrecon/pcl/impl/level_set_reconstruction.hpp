@@ -109,6 +109,7 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       status_.tolerance = r.tolerance;
       status_.residual_history = r.residual_history;
       status_.stage_seconds = r.seconds;
+      status_.outlier_points = r.outlier_points;
     };
     if (status_.dimension == 2) {
       lsr::Points<2> planar;
