@@ -128,10 +128,16 @@ double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const V
 template <int D>
 void QuadricImplicit<D>::evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal,
                                   int threads) const {
-  const Points<D>& p = data_.points();
-  const int k = std::min<int>(kBlendCentres, int(p.size()));
+  const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
   std::vector<Index> nearest;
   data_.query_k(queries, k, nearest, threads);
+  blend(queries, nearest, k, value, normal, threads);
+}
+
+template <int D>
+void QuadricImplicit<D>::blend(const Points<D>& queries, const std::vector<Index>& nearest, int k,
+                               std::vector<double>& value, Points<D>* normal, int threads) const {
+  const Points<D>& p = data_.points();
   value.assign(queries.size(), 0.0);
   if (normal) normal->assign(queries.size(), Vec<D>::Zero());
   const long n = long(queries.size());
@@ -162,13 +168,16 @@ void QuadricImplicit<D>::evaluate(const Points<D>& queries, std::vector<double>&
 
 template <int D>
 Points<D> QuadricImplicit<D>::project(Points<D>& points, int threads) const {
+  const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
+  std::vector<Index> nearest;
+  data_.query_k(points, k, nearest, threads);
   std::vector<double> f;
   Points<D> n;
   for (int step = 0; step < 2; ++step) {
-    evaluate(points, f, &n, threads);
+    blend(points, nearest, k, f, &n, threads);
     for (std::size_t i = 0; i < points.size(); ++i) points[i] -= f[i] * n[i];
   }
-  evaluate(points, f, &n, threads);
+  blend(points, nearest, k, f, &n, threads);
   return n;
 }
 

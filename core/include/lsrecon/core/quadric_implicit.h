@@ -41,6 +41,8 @@ class QuadricImplicit {
                 int threads = 0) const;
 
   /// @brief Moves each point onto {F = 0} (two steps x -= F(x) n(x)); returns the normals there.
+  /// The blended fits are those of the starting position: a step moves a point by far less
+  /// than a spacing, over which the weight of a change in the k nearest is negligible.
   Points<D> project(Points<D>& points, int threads = 0) const;
 
  private:
@@ -52,6 +54,9 @@ class QuadricImplicit {
     double reach = 0.0;  ///< radius of the neighbourhood fitted
   };
   double fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const;
+  /// F (and the normal) at each query from the given blend centres (kBlendCentres per query).
+  void blend(const Points<D>& queries, const std::vector<Index>& nearest, int k, std::vector<double>& value,
+             Points<D>* normal, int threads) const;
 
   const NearestPointIndex<D>& data_;
   std::vector<double> spacing_;
