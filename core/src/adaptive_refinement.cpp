@@ -67,7 +67,7 @@ struct Candidates {
 
 // The leaves created since `first` that a further bisection could concern: no simplex of size
 // h_min or less is ever bisected (every local size is at least h_min), so those need no
-// distance query; at 200k points they are most of the last pass.
+// distance query.
 template <int D>
 Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min) {
   Candidates<D> c;

@@ -19,7 +19,6 @@
 namespace lsr {
 namespace {
 
-
 bool negative(double u) { return u < 0.0; }  // 0 counts as positive
 
 template <int N>

@@ -296,7 +296,7 @@ void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const 
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
   r.surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin);
-  const Eigen::VectorXd g = ops.gradient_of(u);
+  const Eigen::VectorXd g = ops.gradient * u;
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
     const EdgePoint& e = r.surface.sources[i];
@@ -556,7 +556,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.residual = best_residual * median_eps / box.scale();
   r.noise /= box.scale();
   r.spacing /= box.scale();
-  const Points<D> normals = oriented_normals(sampling, at, ops.gradient_of(best));
+  const Points<D> normals = oriented_normals(sampling, at, Eigen::VectorXd(ops.gradient * best));
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   if (o.fit_surface) {

@@ -140,11 +140,6 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
 }
 
 template <int D>
-Eigen::VectorXd P1Operators<D>::gradient_of(const Eigen::VectorXd& u) const {
-  return gradient * u;
-}
-
-template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_norms(const Eigen::VectorXd& u) const {
   return norms_per_vertex<D>(gradient * u);
 }

@@ -36,8 +36,6 @@ struct P1Operators {
   Eigen::VectorXd ball_measure;  ///< #V: |B_i| (the diagonal of Lambda)
   std::vector<char> on_boundary; ///< #V: 1 for vertices on the walls of the box [0,1]^D
 
-  /// @brief G u (D #V).
-  Eigen::VectorXd gradient_of(const Eigen::VectorXd& u) const;
   /// @brief |(G u)_i| per vertex.
   Eigen::VectorXd gradient_norms(const Eigen::VectorXd& u) const;
   /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)
