@@ -2,6 +2,7 @@
 /// @file image_points.cpp
 #include "image_points.h"
 
+#include "lsrecon/adapters/file_header_checks.h"
 #include "lsrecon/core/errors.h"
 
 #include <vtkImageData.h>
@@ -16,7 +17,7 @@
 namespace lsr::demos {
 
 Points<2> read_image_points(const std::string& path) {
-  if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path and the file's permissions");
+  lsr::adapters::check_declared_size(path);
   const bool png = path.size() > 4 && path.substr(path.size() - 4) == ".png";
   vtkSmartPointer<vtkImageReader2> reader;
   if (png) {

@@ -15,6 +15,7 @@
 #include "stopwatch.h"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -22,6 +23,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -67,11 +69,15 @@ options (lengths are in the unit box the data is mapped into: its bounding ball 
   --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
   --smooth N                    N rounds of Laplace smoothing of the 3D result    (default 0)
   --threads N                   0 = all cores                                     (default 0)
-  --max-mesh-vertices N         refuse larger meshes; 0 = from the machine's memory (default 0)
+  --max-memory GIB              refuse clouds and meshes predicted to need more;
+                                0 = min(4, half the machine's memory)             (default 0)
+  --max-mesh-vertices N         refuse larger meshes; 0 = from --max-memory       (default 0)
   --points N                    points of a --demo cloud                          (default 20000)
   --report FILE.json            write figures of the run as JSON
   --quiet                       no progress on stderr
-  --help                        this text
+  --help, -h                    this text
+  --version                     the version
+  Options take their value as --opt VALUE or --opt=VALUE.
 
 exit status: 0 written (see the summary for convergence), 1 bad input or file error,
              2 bad command line, 130 interrupted (nothing written)
@@ -106,6 +112,12 @@ double number(const std::string& flag, const char* text, double lo, double hi) {
   return v;
 }
 
+double integer(const std::string& flag, const char* text, double lo, double hi) {
+  const double v = number(flag, text, lo, hi);
+  if (v != std::floor(v)) usage_error(flag + " expects a whole number, got '" + text + "'");
+  return v;
+}
+
 bool is_2d_shape(const std::string& s) { return s == "star" || s == "three-shapes"; }
 bool is_curve_output(const std::string& ext) { return ext == "svg" || ext == "txt"; }
 bool is_mesh_output(const std::string& ext) { return ext == "ply" || ext == "obj" || ext == "off" || ext == "stl"; }
@@ -114,11 +126,24 @@ Cli parse(int argc, char** argv) {
   Cli c;
   std::vector<std::string> positional;
   for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
+    std::string a = argv[i];
+    // --opt=value as well as --opt value
+    std::string inline_value;
+    const std::size_t eq = a.find('=');
+    const bool has_inline = a.rfind("--", 0) == 0 && eq != std::string::npos;
+    if (has_inline) {
+      inline_value = a.substr(eq + 1);
+      a.resize(eq);
+    }
     if (a == "--help" || a == "-h") {
       std::cout << kUsage;
       std::exit(0);
     }
+    if (a == "--version") {
+      std::cout << "lsrecon " << LSRECON_VERSION << '\n';
+      std::exit(0);
+    }
+    if (has_inline && (a == "--quiet" || a == "--no-fit" || a == "--keep-outliers")) usage_error(a + " takes no value");
     if (a == "--quiet") {
       c.quiet = true;
       continue;
@@ -135,8 +160,8 @@ Cli parse(int argc, char** argv) {
       positional.push_back(a);
       continue;
     }
-    if (i + 1 >= argc) usage_error("option " + a + " needs a value");
-    const char* v = argv[++i];
+    if (!has_inline && i + 1 >= argc) usage_error("option " + a + " needs a value");
+    const char* v = has_inline ? inline_value.c_str() : argv[++i];
     auto& s = c.solver;
     if (a == "--demo") {
       c.demo = v;
@@ -159,13 +184,13 @@ Cli parse(int argc, char** argv) {
     } else if (a == "--time-step") {
       s.time_step = number(a, v, 0, 100);
     } else if (a == "--max-iterations") {
-      s.max_iterations = int(number(a, v, 1, 1e7));
+      s.max_iterations = int(integer(a, v, 1, 1e7));
     } else if (a == "--tolerance") {
       s.tolerance = number(a, v, 0, 0.5);
     } else if (a == "--hole-radius") {
       s.hole_radius = number(a, v, 0, 0.49);
     } else if (a == "--renormalization-interval") {
-      s.renormalization_interval = int(number(a, v, 0, 1000));
+      s.renormalization_interval = int(integer(a, v, 0, 1000));
     } else if (a == "--init") {
       const std::string init = v;
       if (init != "tagged" && init != "enclose" && init != "inside") {
@@ -175,17 +200,19 @@ Cli parse(int argc, char** argv) {
                         : init == "enclose" ? lsr::InitialFront::enclosing
                                             : lsr::InitialFront::tagged;
     } else if (a == "--dim") {
-      c.dim = int(number(a, v, 2, 3));
+      c.dim = int(integer(a, v, 2, 3));
     } else if (a == "--decimate") {
-      c.decimate = long(number(a, v, 4, 1e9));
+      c.decimate = long(integer(a, v, 4, 1e9));
     } else if (a == "--smooth") {
-      c.smooth = unsigned(number(a, v, 0, 1000));
+      c.smooth = unsigned(integer(a, v, 0, 1000));
     } else if (a == "--threads") {
-      s.threads = int(number(a, v, 0, 1024));
+      s.threads = int(integer(a, v, 0, 1024));
     } else if (a == "--max-mesh-vertices") {
-      s.max_vertices = lsr::Index(number(a, v, 0, 2e9));
+      s.max_vertices = lsr::Index(integer(a, v, 0, 2e9));
+    } else if (a == "--max-memory") {
+      s.max_memory = number(a, v, 0, 1e5) * double(1 << 30);
     } else if (a == "--points") {
-      c.points = int(number(a, v, 4, 5e7));
+      c.points = int(integer(a, v, 4, 5e7));
     } else if (a == "--report") {
       c.report = v;
     } else {
@@ -350,13 +377,41 @@ void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   }
 }
 
+std::size_t distinct_points(lsr::Points<3> p) {
+  std::sort(p.begin(), p.end(), [](const lsr::Vec<3>& a, const lsr::Vec<3>& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  });
+  return std::size_t(std::unique(p.begin(), p.end()) - p.begin());
+}
+
+// Before any work: a result that cannot be written would be lost at the end of the run.
+void check_writable(const std::string& file, const std::string& input) {
+  namespace fs = std::filesystem;
+  const fs::path out(file);
+  const fs::path dir = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  std::error_code e;
+  if (!fs::is_directory(dir, e)) throw lsr::Error("the output directory " + dir.string() + " does not exist", "create it first");
+  if (::access(dir.c_str(), W_OK) != 0) {
+    throw lsr::Error("cannot write in " + dir.string() + " (permission denied)", "write the output elsewhere");
+  }
+  if (fs::is_directory(out, e)) throw lsr::Error(file + " is a directory", "name an output file");
+  if (!input.empty() && fs::exists(out, e) && fs::equivalent(input, out, e)) {
+    throw lsr::Error(file + " is the input file", "name another output file; the input would be overwritten");
+  }
+}
+
 int run(const Cli& c) {
+  check_writable(c.output, c.input);
+  if (!c.report.empty()) check_writable(c.report, c.input);
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
   const double read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);
+  // Three distinct points or fewer are flat whatever they sample: the output decides, the
+  // solver then says how many points a closed curve or surface needs.
+  if (c.dim == 0 && distinct_points(in.points) <= 3) in.dim = is_curve_output(out_ext) ? 2 : 3;
   if (in.dim == 2 && is_mesh_output(out_ext)) {
     throw lsr::InvalidInput("the input is planar (2D), so the result is curves, not a mesh",
                             "write .svg or .txt, or pass --dim 3 for a flat 3D shape");

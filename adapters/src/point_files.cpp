@@ -2,6 +2,7 @@
 /// @file point_files.cpp
 #include "lsrecon/adapters/point_files.h"
 
+#include "lsrecon/adapters/file_header_checks.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/pcl_points.h"
 #include "lsrecon/core/errors.h"
@@ -14,6 +15,7 @@
 #include <cctype>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace lsr::adapters {
 
@@ -28,32 +30,49 @@ std::string file_extension(const std::string& path) {
 
 namespace {
 
+bool is_number(const std::string& token, double& value) {
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end != token.c_str() && *end == '\0';
+}
+
+// Whitespace-separated fields; a line that is one comma- or semicolon-separated field is CSV.
+std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream s(line);
+  for (std::string t; s >> t;) fields.push_back(t);
+  if (fields.size() == 1 && fields[0].find_first_of(",;") != std::string::npos) {
+    std::string csv = fields[0];
+    std::replace_if(csv.begin(), csv.end(), [](char c) { return c == ',' || c == ';'; }, ' ');
+    return split_fields(csv);
+  }
+  return fields;
+}
+
 PointFile read_text(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
   PointFile out;
+  const char* const format = "a point file has 'x y' or 'x y z' (or x,y,z) per line, '.' as the decimal point (# starts a comment)";
   std::string line;
   int columns = 0;
+  bool first = true;
   for (long number = 1; std::getline(in, line); ++number) {
     const std::size_t start = line.find_first_not_of(" \t\r");
     if (start == std::string::npos || line[start] == '#') continue;
-    std::istringstream fields(line);
+    const std::vector<std::string> fields = split_fields(line);
     double v[3] = {0, 0, 0};
     int n = 0;
-    std::string token;
-    while (n < 3 && fields >> token) {
-      char* end = nullptr;
-      v[n] = std::strtod(token.c_str(), &end);
-      if (end == token.c_str() || *end != '\0') {
-        throw Error(path + ":" + std::to_string(number) + ": '" + token + "' is not a number",
-                    "a point file has 'x y' or 'x y z' per line (# starts a comment)");
+    // A first line of names is a column header ("x,y,z").
+    const bool header = first && std::all_of(fields.begin(), fields.end(), [](const std::string& t) { return std::isalpha(static_cast<unsigned char>(t[0])) != 0; });
+    first = false;
+    if (header) continue;
+    for (; n < 3 && n < int(fields.size()); ++n) {
+      if (!is_number(fields[n], v[n])) {
+        throw Error(path + ":" + std::to_string(number) + ": '" + fields[n] + "' is not a number", format);
       }
-      ++n;
     }
-    if (n < 2) {
-      throw Error(path + ":" + std::to_string(number) + ": expected 2 or 3 numbers",
-                  "a point file has 'x y' or 'x y z' per line (# starts a comment)");
-    }
+    if (n < 2) throw Error(path + ":" + std::to_string(number) + ": expected 2 or 3 numbers", format);
     if (columns == 0) columns = n;
     const Vec<3> p(v[0], v[1], v[2]);
     if (p.allFinite()) {
@@ -100,21 +119,24 @@ PointFile read_pcl(const std::string& path, Load load) {
 }  // namespace
 
 PointFile read_point_file(const std::string& path) {
+  check_declared_size(path);
   const std::string ext = file_extension(path);
-  if (ext == "xyz" || ext == "txt" || ext == "xy" || ext == "pts") return read_text(path);
+  const bool text = ext == "xyz" || ext == "txt" || ext == "xy" || ext == "pts";
+  const bool mesh = ext == "obj" || ext == "off" || ext == "stl";
+  if (!text && !mesh && ext != "pcd" && ext != "ply") {
+    throw Error("unknown input format '" + ext + "' (" + path + ")",
+                "use .pcd, .ply, .xyz, .txt, .obj, .off or .stl (and .pgm / .png images for 2D)");
+  }
+  if (text) return read_text(path);
   if (ext == "pcd") {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPCDFile(p, c); });
   }
   if (ext == "ply") {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPLYFile(p, c); });
   }
-  if (ext == "obj" || ext == "off" || ext == "stl") {
-    PointFile out;
-    out.points = read_mesh_vertices(path);
-    return out;
-  }
-  throw Error("unknown input format '" + ext + "' (" + path + ")",
-              "use .pcd, .ply, .xyz, .txt, .obj, .off or .stl (and .pgm / .png images for 2D)");
+  PointFile out;
+  out.points = read_mesh_vertices(path);
+  return out;
 }
 
 }  // namespace lsr::adapters

@@ -19,7 +19,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace lsr {
@@ -56,22 +58,35 @@ void require_spanning(const Points<D>& points) {
   if (points.empty()) {
     throw InvalidInput("the point set is empty (no finite points)", "pass a cloud with points; NaN / infinite points are skipped");
   }
-  if (points.size() < std::size_t(D + 1)) {
-    throw InvalidInput(std::to_string(points.size()) + " valid points cannot define a " + shape,
+  Points<D> sorted = points;
+  std::sort(sorted.begin(), sorted.end(), [](const Vec<D>& a, const Vec<D>& b) {
+    return std::lexicographical_compare(a.data(), a.data() + D, b.data(), b.data() + D);
+  });
+  const std::size_t distinct = std::size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+  if (distinct < std::size_t(D + 1)) {
+    throw InvalidInput(std::to_string(distinct) + " distinct point(s) cannot define a " + shape,
                        "pass at least " + std::to_string(D + 1) + " distinct points; a useful "
                        "reconstruction needs hundreds");
   }
   Vec<D> mean = Vec<D>::Zero();
-  for (const auto& p : points) mean += p;
-  mean /= double(points.size());
+  for (const auto& p : points) mean += p / double(points.size());
+  double extent = 0.0;
+  for (const auto& p : points) extent = std::max(extent, (p - mean).cwiseAbs().maxCoeff());
+  if (!std::isfinite(extent) || !mean.allFinite()) {
+    throw InvalidInput("the coordinates are too large for double precision arithmetic",
+                       "rescale the points (coordinates below 1e150)");
+  }
+  // Scaled to the extent: squares of 1e300 would overflow.
   Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
-  for (const auto& p : points) cov += (p - mean) * (p - mean).transpose();
+  for (const auto& p : points) cov += ((p - mean) / extent) * ((p - mean) / extent).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> eig(cov);
   const double largest = eig.eigenvalues()[D - 1];
   // Relative thickness below 1e-6: flat to double precision after any realistic noise.
   if (!(largest > 0.0) || eig.eigenvalues()[0] < 1e-12 * largest) {
-    throw InvalidInput(std::string("the points are ") + (D == 2 ? "colinear" : "coplanar or colinear") +
-                           ": they do not enclose a region",
+    std::ostringstream why;
+    why << "the points are " << (D == 2 ? "colinear" : "coplanar or colinear") << " (thinner than 1e-6 of their extent "
+        << std::setprecision(3) << extent << "): they do not enclose a region";
+    throw InvalidInput(why.str(),
                        D == 3 ? "for planar data reconstruct curves in 2D (dimension 2)"
                               : "a closed curve needs points that are not on one line");
   }
@@ -115,13 +130,38 @@ std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fi
   return h;
 }
 
-// Vertices whose solve fits in 70% of the physical memory (peak bytes per vertex measured by
-// the solver benchmark, rounded up).
+// Peak memory per input point and per mesh vertex, measured (README, "Peak memory": 2.3 KB per
+// 3D mesh vertex, about 0.8 KB per point at 1M points) and rounded up.
+constexpr double kBytesPerPoint = 1000.0;
 template <int D>
-Index memory_limited_vertices() {
-  const double bytes = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  const double per_vertex = D == 3 ? 3500.0 : 2000.0;
-  return Index(std::clamp(0.7 * bytes / per_vertex, 1e5, 2e9));
+constexpr double kBytesPerVertex = D == 3 ? 3000.0 : 2000.0;
+
+// max_memory, or min(4 GiB, half the physical memory).
+double memory_budget(const ReconstructionOptions& o) {
+  if (o.max_memory > 0.0) return o.max_memory;
+  const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  return std::min(4.0 * (1 << 30), 0.5 * physical);
+}
+
+std::string gib(double bytes) {
+  std::ostringstream s;
+  s << std::setprecision(3) << bytes / double(1 << 30) << " GiB";
+  return s.str();
+}
+
+// The mesh vertices that fit in the budget beside the points; refuses a cloud that alone
+// would not.
+template <int D>
+Index memory_limited_vertices(const ReconstructionOptions& o, std::size_t points) {
+  const double budget = memory_budget(o);
+  const double for_points = double(points) * kBytesPerPoint;
+  const double vertices = (budget - for_points) / kBytesPerVertex<D>;
+  if (vertices < 1e4) {
+    throw ResourceLimit(std::to_string(points) + " points need about " + gib(for_points + 1e4 * kBytesPerVertex<D>) +
+                            ", more than the memory limit of " + gib(budget),
+                        "raise max_memory (lsrecon --max-memory GiB) or subsample the cloud");
+  }
+  return Index(std::min(vertices, 2e9));
 }
 
 void check_options(const ReconstructionOptions& o) {
@@ -149,7 +189,8 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.outlier_factor == 0.0 || (o.outlier_factor >= 1.0 && o.outlier_factor <= 1e3))) {
     bad("outlier_factor must be 0 (keep every point) or in [1, 1000]", "use 3");
   }
-  if (o.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from the machine's memory)");
+  if (o.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from max_memory)");
+  if (!(o.max_memory >= 0.0 && o.max_memory < 1e15)) bad("max_memory must be >= 0 bytes and finite", "use 0 (min(4 GiB, half the memory))");
   if (!(o.solver_tolerance > 0.0 && o.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
   if (o.initial_front != InitialFront::inside && o.alpha < 0.0) {
     bad("alpha < 0 makes a front that encloses the data grow away from it",
@@ -289,13 +330,23 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
   return flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads);
 }
 
+// The output surface of `values`, closed: a front or fit that reaches the box (a handful of
+// points spanning the box, a fit extrapolated past the data) is capped just inside the walls.
+template <int D>
+LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, std::vector<double> values) {
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    if (on_wall<D>(mesh.vertices[v])) values[v] = std::max(values[v], std::numeric_limits<double>::min());
+  }
+  return extract_zero_level_set(mesh, values, kOutputEdgeMargin);
+}
+
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
 template <int D>
 void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
                   const Eigen::VectorXd& u, double level) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
-  r.surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin);
+  r.surface = extract_closed_surface(mesh, std::move(values));
   const Eigen::VectorXd g = ops.gradient * u;
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
@@ -348,7 +399,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] + hole_radius;
     values[v] = trusted ? f[k] : u[v];
   }
-  r.surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin);
+  r.surface = extract_closed_surface(mesh, std::move(values));
   r.normals = fit.project(r.surface.vertices, threads);
 }
 
@@ -356,6 +407,8 @@ template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
+  // Before anything is allocated for the points.
+  const Index max_vertices = o.max_vertices > 0 ? o.max_vertices : memory_limited_vertices<D>(o, input.size());
   ReconstructionResult<D> r;
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
@@ -394,7 +447,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
   mo.h_max = std::max(o.h_max, mo.h_min);
   mo.grading = o.grading;
-  mo.max_vertices = o.max_vertices > 0 ? o.max_vertices : memory_limited_vertices<D>();
+  mo.max_vertices = max_vertices;
   mo.threads = o.threads;
   r.h_min = mo.h_min;
   const AdaptiveMesh<D> adaptive = build_adaptive_mesh(data, mo, progress);

@@ -27,6 +27,8 @@ class DisjointSets {
   std::vector<Index> parent_;
 };
 
+}  // namespace
+
 template <int D>
 bool on_wall(const Vec<D>& x) {
   for (int k = 0; k < D; ++k) {
@@ -34,8 +36,6 @@ bool on_wall(const Vec<D>& x) {
   }
   return false;
 }
-
-}  // namespace
 
 template <int D>
 std::vector<Index> vertex_components(const SimplexMesh<D>& mesh, const std::vector<char>& member) {
@@ -70,6 +70,8 @@ std::vector<char> flood_from_walls(const SimplexMesh<D>& mesh, const std::vector
 
 template std::vector<Index> vertex_components<2>(const SimplexMesh<2>&, const std::vector<char>&);
 template std::vector<Index> vertex_components<3>(const SimplexMesh<3>&, const std::vector<char>&);
+template bool on_wall<2>(const Vec<2>&);
+template bool on_wall<3>(const Vec<3>&);
 template std::vector<char> flood_from_walls<2>(const SimplexMesh<2>&, const std::vector<char>&);
 template std::vector<char> flood_from_walls<3>(const SimplexMesh<3>&, const std::vector<char>&);
 

@@ -2,10 +2,8 @@
 /// @file lsrecon_cli_test.cpp
 /// @brief The lsrecon command line as a user runs it: every input and output format, the JSON
 /// report, and every documented error path (exit code and message).
-#include "lsrecon/adapters/openmesh_mesh.h"
+#include "cli_fixture.h"
 #include "lsrecon/adapters/point_files.h"
-#include "lsrecon/core/analytic_shapes.h"
-#include "lsrecon/core/surface_topology.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -24,51 +22,10 @@
 
 namespace {
 
+using lsr_test::Cli;
+using lsr_test::CliRun;
+using lsr_test::expect_closed_mesh;
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lsrecon_cli_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  CliRun run(const std::string& args) const {
-    const std::string log = path("log.txt");
-    const std::string command = std::string(LSRECON_CLI) + " " + args + " > " + log + " 2>&1";
-    CliRun r;
-    const int raw = std::system(command.c_str());
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(log);
-    std::stringstream s;
-    s << in.rdbuf();
-    r.output = s.str();
-    return r;
-  }
-
-  static lsr::Points<3> sphere() { return lsr::Sphere{lsr::Vec<3>(1, 2, 3), 2.0}.sample(3000); }
-
-  fs::path dir_;
-};
-
-void expect_closed_mesh(const std::string& file, int genus = 0) {
-  lsr::adapters::TriMesh mesh;
-  ASSERT_TRUE(OpenMesh::IO::read_mesh(mesh, file)) << file;
-  const lsr::LevelSetMesh<3> m = lsr::adapters::from_openmesh(mesh);
-  const lsr::SurfaceTopology t = lsr::analyze_surface(m.vertices, m.facets);
-  EXPECT_TRUE(t.watertight) << file;
-  EXPECT_EQ(t.components, 1) << file;
-  EXPECT_EQ(t.genus, std::vector<int>{genus}) << file;
-}
 
 TEST_F(Cli, ReadsEveryInputFormat) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
@@ -175,44 +132,6 @@ TEST_F(Cli, CommandLineErrorsExitWithTwoAndSayWhatToChange) {
   const CliRun help = run("--help");
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.output.find("--resolution"), std::string::npos);
-}
-
-TEST_F(Cli, BadInputExitsWithOneAndNeverClobbersTheOutput) {
-  std::ofstream(path("keep.ply")) << "precious";
-  std::ofstream(path("empty.xyz")) << "# nothing\n";
-  std::ofstream(path("junk.pcd")) << "this is not a point cloud\n";
-  std::ofstream(path("junk.ply")) << "ply\nformat nonsense\n";
-  std::ofstream(path("words.xyz")) << "1 2 3\n4 five 6\n";
-  std::ofstream line(path("line.xyz"));
-  for (int i = 0; i < 100; ++i) line << i << ' ' << 2 * i << ' ' << 3 * i << '\n';
-  line.close();
-  std::ofstream flat(path("flat.xyz"));
-  for (const auto& p : lsr::Circle{lsr::Vec<2>(0, 0), 1.0}.sample(500)) flat << p.x() << ' ' << p.y() << " 0\n";
-  flat.close();
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {path("missing.xyz"), "cannot open"},      {path("empty.xyz"), "empty"},
-      {path("junk.pcd"), "cannot read"},         {path("junk.ply"), "cannot read"},
-      {path("words.xyz"), "words.xyz:2"},
-      {path("line.xyz"), "colinear"},            {path("flat.xyz"), "planar"},
-      {path("in.unknown"), "unknown input format"},
-  };
-  for (const auto& [input, message] : cases) {
-    const CliRun r = run(input + " " + path("keep.ply") + " --quiet");
-    EXPECT_EQ(r.status, 1) << input << ": " << r.output;
-    EXPECT_NE(r.output.find(message), std::string::npos) << input << ": " << r.output;
-    EXPECT_NE(r.output.find("hint"), std::string::npos) << input << ": " << r.output;
-    std::ifstream kept(path("keep.ply"));
-    std::string content;
-    kept >> content;
-    EXPECT_EQ(content, "precious") << input;
-  }
-  // A mesh that would not fit is refused, naming a feasible resolution.
-  const CliRun big = run("--demo sphere --resolution 50000 --quiet " + path("keep.ply"));
-  EXPECT_EQ(big.status, 1) << big.output;
-  EXPECT_NE(big.output.find("resolution of at most"), std::string::npos) << big.output;
-  for (const auto& entry : fs::directory_iterator(dir_)) {
-    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
-  }
 }
 
 }  // namespace

@@ -40,8 +40,7 @@ pcl::PointCloud<pcl::PointNormal> normal_cloud(const Points<D>& vertices, const 
 inline std::vector<pcl::Vertices> polygons_from_triangles(const std::vector<std::array<Index, 3>>& triangles) {
   std::vector<pcl::Vertices> polygons(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
-    polygons[f].vertices = {std::uint32_t(triangles[f][0]), std::uint32_t(triangles[f][1]),
-                            std::uint32_t(triangles[f][2])};
+    polygons[f].vertices = {pcl::index_t(triangles[f][0]), pcl::index_t(triangles[f][1]), pcl::index_t(triangles[f][2])};
   }
   return polygons;
 }

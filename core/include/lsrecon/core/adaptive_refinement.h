@@ -41,7 +41,7 @@ class MeshTooLarge : public ResourceLimit {
       : ResourceLimit(what, "use a resolution of at most " +
                                 std::to_string(int(largest_feasible_resolution)) +
                                 " (h_min >= 1/" + std::to_string(int(largest_feasible_resolution)) +
-                                ") or raise max_vertices"),
+                                ") or allow more memory (max_memory)"),
         largest_feasible_resolution(largest_feasible_resolution) {}
   double largest_feasible_resolution;  ///< 1/h_min that is expected to fit
 };

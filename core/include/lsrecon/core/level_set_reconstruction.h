@@ -121,9 +121,12 @@ struct ReconstructionOptions {
   InitialFront initial_front = InitialFront::tagged;
   LinearSolver solver = LinearSolver::conjugate_gradient;
   double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
-  /// Refuse (lsr::MeshTooLarge) meshes predicted to need more vertices; 0: what fits in 70% of
-  /// the machine's memory at the measured peak of about 3 KB per vertex in 3D (3.5 KB
-  /// assumed) and 1.5 KB in 2D (2 KB assumed): about 4.8 million 3D vertices in 24 GiB.
+  /// Memory the run may take, in bytes; 0: min(4 GiB, half the physical memory). Clouds and
+  /// meshes predicted to need more are refused before they are built (lsr::ResourceLimit,
+  /// lsr::MeshTooLarge), at the measured peak rounded up: 1 KB per input point, 3 KB per 3D
+  /// mesh vertex, 2 KB per 2D one (4 GiB: about 1.4 million 3D mesh vertices).
+  double max_memory = 0.0;
+  /// Refuse (lsr::MeshTooLarge) meshes predicted to need more vertices; 0: from max_memory.
   Index max_vertices = 0;
   int threads = 0;  ///< 0: all cores
 };

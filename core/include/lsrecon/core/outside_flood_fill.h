@@ -20,6 +20,10 @@ namespace lsr {
 template <int D>
 std::vector<Index> vertex_components(const SimplexMesh<D>& mesh, const std::vector<char>& member);
 
+/// @brief True on the boundary of the box [0,1]^D (or outside it).
+template <int D>
+bool on_wall(const Vec<D>& x);
+
 /// @brief Marks (1) the vertices connected to a wall vertex of the box [0,1]^D through mesh
 /// edges whose two ends are both passable. Wall vertices that are not passable are not reached.
 /// @param passable #V flags
