@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file image_points.h
 /// @brief 2D input from a binary image, as in the paper's first example: every dark pixel
-/// (grey < 128) is a data point at its centre, y up. PGM / PPM and PNG through VTK's readers.
+/// (grey below half) is a data point at its centre, y up. PBM / PGM / PPM and PNG.
 #pragma once
 
 #include "lsrecon/core/types.h"

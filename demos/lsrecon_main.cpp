@@ -269,7 +269,7 @@ Input generate(const Cli& c) {
 Input read_input(const Cli& c) {
   Input in;
   const std::string ext = lsr::adapters::file_extension(c.input);
-  if (ext == "pgm" || ext == "ppm" || ext == "pnm" || ext == "png") {
+  if (ext == "pgm" || ext == "ppm" || ext == "pbm" || ext == "pnm" || ext == "png") {
     for (const auto& p : lsr::demos::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
     in.dim = 2;
     return in;

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -44,16 +45,18 @@ void require_fits(const std::string& path, double declared, double minimum_bytes
   }
 }
 
-// Header lines up to and including the one starting with `last`; `offset` is then where the
-// data begins. False if the file ends (or 64 KiB pass) first.
-bool read_header(std::ifstream& in, const std::string& last, std::vector<std::vector<std::string>>& lines, double& offset) {
+// Header lines up to and including the one starting with `last` (split in words; blank lines,
+// and '#' comments if `hash_comments`, left out); `offset` is then where the data begins.
+// False if the file ends (or 64 KiB pass) first.
+bool read_header(std::ifstream& in, const std::string& last, bool hash_comments, std::vector<std::vector<std::string>>& lines,
+                 double& offset) {
   std::string line;
   while (std::getline(in, line)) {
     if (in.tellg() > 65536) return false;
     std::istringstream s(line);
     std::vector<std::string> words;
     for (std::string w; s >> w;) words.push_back(w);
-    if (!words.empty() && words[0][0] != '#') lines.push_back(words);
+    if (!words.empty() && !(hash_comments && words[0][0] == '#')) lines.push_back(words);
     if (!words.empty() && words[0] == last) {
       offset = double(in.tellg());
       return true;
@@ -65,9 +68,14 @@ bool read_header(std::ifstream& in, const std::string& last, std::vector<std::ve
 void check_pcd(const std::string& path, std::ifstream& in, double size) {
   std::vector<std::vector<std::string>> lines;
   double offset = 0.0;
-  if (!read_header(in, "DATA", lines, offset)) corrupt(path, "no PCD header (it ends with a DATA line)");
+  if (!read_header(in, "DATA", true, lines, offset)) corrupt(path, "no PCD header (it ends with a DATA line)");
+  static const std::set<std::string> kKeys = {"VERSION", "FIELDS", "SIZE", "TYPE", "COUNT", "WIDTH", "HEIGHT",
+                                              "VIEWPOINT", "POINTS", "DATA"};
   std::map<std::string, std::vector<std::string>> key;
-  for (const auto& l : lines) key[l[0]] = std::vector<std::string>(l.begin() + 1, l.end());
+  for (const auto& l : lines) {
+    if (!kKeys.count(l[0]) || key.count(l[0])) corrupt(path, "unknown or repeated PCD header line '" + l[0] + "'");
+    key[l[0]] = std::vector<std::string>(l.begin() + 1, l.end());
+  }
   const auto& sizes = key["SIZE"];
   const auto& fields = key["FIELDS"];
   std::vector<std::string> counts = key["COUNT"];
@@ -75,10 +83,20 @@ void check_pcd(const std::string& path, std::ifstream& in, double size) {
   if (fields.empty() || sizes.size() != fields.size() || counts.size() != fields.size() || key["DATA"].size() != 1) {
     corrupt(path, "malformed PCD header (FIELDS, SIZE, COUNT and DATA disagree)");
   }
+  const auto& types = key["TYPE"];
+  if (types.size() != fields.size()) corrupt(path, "malformed PCD header (FIELDS and TYPE disagree)");
   double values = 0.0, bytes = 0.0;
   for (std::size_t f = 0; f < fields.size(); ++f) {
-    values += parse_count(path, counts[f]);
-    bytes += parse_count(path, sizes[f]) * parse_count(path, counts[f]);
+    const double size = parse_count(path, sizes[f]), count = parse_count(path, counts[f]);
+    // PCL copies SIZE bytes per value whatever TYPE says: only the sizes a type can have.
+    const bool valid = types[f] == "F" ? (size == 4 || size == 8)
+                                       : (types[f] == "I" || types[f] == "U") && (size == 1 || size == 2 || size == 4 || size == 8);
+    const bool coordinate = fields[f] == "x" || fields[f] == "y" || fields[f] == "z";
+    if (!valid || count < 1 || (coordinate && (types[f] != "F" || count != 1))) {
+      corrupt(path, "the PCD field '" + fields[f] + "' has TYPE " + types[f] + ", SIZE " + sizes[f] + ", COUNT " + counts[f]);
+    }
+    values += count;
+    bytes += size * count;
   }
   if (key["WIDTH"].size() != 1 || key["HEIGHT"].size() != 1) corrupt(path, "malformed PCD header (WIDTH, HEIGHT)");
   const double points = parse_count(path, key["WIDTH"][0]) * parse_count(path, key["HEIGHT"][0]);
@@ -118,30 +136,51 @@ double ply_type_size(const std::string& path, const std::string& type) {
 void check_ply(const std::string& path, std::ifstream& in, double size) {
   std::vector<std::vector<std::string>> lines;
   double offset = 0.0;
-  if (!read_header(in, "end_header", lines, offset) || lines.empty() || lines[0][0] != "ply") {
+  if (!read_header(in, "end_header", false, lines, offset) || lines.empty() || lines[0][0] != "ply") {
     corrupt(path, "no PLY header (ply ... end_header)");
   }
   bool ascii = false;
   double minimum = 0.0, count = 0.0, element_bytes = 0.0, total = 0.0;
+  std::string element;
+  double vertices = 0.0;
+  int xyz = 0;
   const auto close_element = [&] { minimum += count * element_bytes; };
-  for (const auto& l : lines) {
+  // Every line is checked: PCL 1.13's PLY parser asserts (aborts) on some it does not expect,
+  // e.g. a list property of the vertex element.
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto& l = lines[i];
     if (l[0] == "format") {
-      if (l.size() < 2) corrupt(path, "malformed PLY format line");
+      if (l.size() != 3 || (l[1] != "ascii" && l[1] != "binary_little_endian" && l[1] != "binary_big_endian")) {
+        corrupt(path, "malformed PLY format line");
+      }
       ascii = l[1] == "ascii";
     } else if (l[0] == "element") {
       if (l.size() != 3) corrupt(path, "malformed PLY element line");
       close_element();
+      element = l[1];
       count = parse_count(path, l[2]);
+      if (element == "vertex") vertices += count;
       total += count;
       element_bytes = 0.0;
     } else if (l[0] == "property") {
+      if (element.empty()) corrupt(path, "a PLY property before any element");
       // A value is a digit and a separator in text; a list holds at least its length.
-      if (l.size() >= 5 && l[1] == "list") element_bytes += ascii ? 2.0 : ply_type_size(path, l[2]);
-      else if (l.size() == 3) element_bytes += ascii ? 2.0 : ply_type_size(path, l[1]);
-      else corrupt(path, "malformed PLY property line");
+      if (l.size() == 5 && l[1] == "list" && element != "vertex") {
+        ply_type_size(path, l[3]);
+        element_bytes += ascii ? 2.0 : ply_type_size(path, l[2]);
+      } else if (l.size() == 3 && l[1] != "list") {
+        element_bytes += ascii ? 2.0 : ply_type_size(path, l[1]);
+        xyz += element == "vertex" && (l[2] == "x" || l[2] == "y" || l[2] == "z");
+      } else {
+        corrupt(path, "malformed PLY property line (or a list in the vertex element)");
+      }
+    } else if (l[0] != "comment" && l[0] != "obj_info" && l[0] != "end_header") {
+      corrupt(path, "unknown PLY header line '" + l[0] + "'");
     }
   }
   close_element();
+  // PCL's conversion of an empty cloud takes the address of its first point.
+  if (vertices == 0.0 || xyz != 3) corrupt(path, "no vertex element with x, y and z in the PLY header");
   require_fits(path, total, minimum - (ascii ? 1.0 : 0.0), size - offset, "elements");
 }
 

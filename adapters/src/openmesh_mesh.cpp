@@ -94,18 +94,4 @@ void smooth(TriMesh& mesh, unsigned iterations) {
   mesh.update_normals();
 }
 
-Points<3> read_mesh_vertices(const std::string& path) {
-  OpenMesh::PolyMesh_ArrayKernelT<> mesh;
-  if (!OpenMesh::IO::read_mesh(mesh, path)) {
-    throw Error("cannot read the mesh file " + path, "check that it exists and is a valid OBJ, OFF, PLY or STL file");
-  }
-  Points<3> points;
-  points.reserve(mesh.n_vertices());
-  for (const auto& v : mesh.vertices()) {
-    const auto& p = mesh.point(v);
-    points.emplace_back(p[0], p[1], p[2]);
-  }
-  return points;
-}
-
 }  // namespace lsr::adapters

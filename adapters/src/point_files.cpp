@@ -3,7 +3,7 @@
 #include "lsrecon/adapters/point_files.h"
 
 #include "lsrecon/adapters/file_header_checks.h"
-#include "lsrecon/adapters/openmesh_mesh.h"
+#include "lsrecon/adapters/mesh_file_vertices.h"
 #include "lsrecon/adapters/pcl_points.h"
 #include "lsrecon/core/errors.h"
 
@@ -106,8 +106,13 @@ PointFile read_pcl(const std::string& path, Load load) {
   pcl::PointCloud<pcl::PointXYZ> cloud;
   if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path and the file's permissions");
   const bool pcd = file_extension(path) == "pcd";
-  if ((pcd && !plausible_pcd(path)) || load(path, cloud) < 0) {
-    throw Error("cannot read the point cloud in " + path, "the file is corrupt or not a PCD / PLY point cloud");
+  const char* const hint = "the file is corrupt or not a PCD / PLY point cloud";
+  try {
+    if ((pcd && !plausible_pcd(path)) || load(path, cloud) < 0) throw Error("cannot read the point cloud in " + path, hint);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {  // PCL's parsers throw what they meet (stoi, lexical_cast)
+    throw Error("cannot read the point cloud in " + path + " (" + e.what() + ")", hint);
   }
   ConvertedPoints c = points_from_cloud(cloud);
   PointFile out;
@@ -135,7 +140,7 @@ PointFile read_point_file(const std::string& path) {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPLYFile(p, c); });
   }
   PointFile out;
-  out.points = read_mesh_vertices(path);
+  out.points = read_mesh_file_vertices(path);
   return out;
 }
 

@@ -37,8 +37,4 @@ std::size_t decimate(TriMesh& mesh, std::size_t target_faces);
 /// rounds; keeps the connectivity. Vertex normals are recomputed.
 void smooth(TriMesh& mesh, unsigned iterations);
 
-/// @brief The vertex positions of a mesh file (OBJ, OFF, PLY, STL) read by OpenMesh.
-/// @throw lsr::Error if the file cannot be read.
-Points<3> read_mesh_vertices(const std::string& path);
-
 }  // namespace lsr::adapters
