@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <limits>
+#include <thread>
+#include <vector>
 
 namespace {
 
@@ -136,6 +138,20 @@ TEST(PclLevelSetReconstruction, MissingOrBadInputLeavesTheOutputEmpty) {
   ls.reconstruct(points, polygons);
   EXPECT_TRUE(polygons.empty());
   EXPECT_TRUE(points.empty());
+
+  // Beyond the memory limit: refused, said in the status, then fine once the limit is lifted.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr sphere(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(2000)) sphere->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  ls.setInputCloud(sphere);
+  ls.setMaximumMemory(1e6);  // 2,000 points at 1 KB and a 10,000-vertex mesh at 3 KB do not fit
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(mesh.polygons.empty());
+  EXPECT_FALSE(ls.getStatus().ok);
+  EXPECT_NE(ls.getStatus().message.find("memory limit"), std::string::npos) << ls.getStatus().message;
+  ls.setMaximumMemory(0.0);
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(ls.getStatus().ok) << ls.getStatus().message;
+  EXPECT_FALSE(mesh.polygons.empty());
 }
 
 TEST(PclLevelSetReconstruction, HonoursIndicesAndSetters) {
@@ -182,6 +198,66 @@ TEST(PclLevelSetReconstruction, InputNormalsAreAlignedWithTheCloudAndOutward) {
     EXPECT_NEAR(n.norm(), 1.0, 1e-5);
     EXPECT_GT(n.dot(sample.normals[i]), 0.0) << "point " << i;
   }
+}
+
+// The library contract (run under the sanitizers too): NaN-only clouds and indices out of range
+// are refused or skipped, an object reused on a second cloud forgets the first, and two objects
+// on two threads at once give what each gives alone.
+TEST(PclLevelSetReconstruction, NaNOnlyCloudsAndIndicesOutOfRangeAreReportedNotRead) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  pcl::PointCloud<pcl::PointXYZ>::Ptr nans(new pcl::PointCloud<pcl::PointXYZ>);
+  for (int i = 0; i < 10; ++i) nans->push_back(pcl::PointXYZ(nan, nan, nan));
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(nans);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  EXPECT_FALSE(ls.getStatus().ok);
+  EXPECT_NE(ls.getStatus().message.find("no finite point"), std::string::npos) << ls.getStatus().message;
+  EXPECT_TRUE(mesh.polygons.empty());
+
+  auto cloud = torus_cloud<pcl::PointXYZ>(3000);
+  pcl::IndicesPtr indices(new pcl::Indices);
+  for (int i = 0; i < int(cloud->size()); ++i) indices->push_back(i);
+  indices->push_back(int(cloud->size()) + 5);  // out of range
+  indices->push_back(-1);
+  ls.setInputCloud(cloud);
+  ls.setIndices(indices);
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok) << ls.getStatus().message;
+  EXPECT_EQ(ls.getStatus().skipped_points, 3u);  // the NaN point and the two bad indices
+}
+
+std::vector<pcl::Indices> polygons_of(pcl::LevelSetReconstruction<pcl::PointXYZ>& ls,
+                                      const pcl::PointCloud<pcl::PointXYZ>::Ptr& cloud) {
+  ls.setInputCloud(cloud);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(ls.getStatus().ok) << ls.getStatus().message;
+  std::vector<pcl::Indices> polygons;
+  for (const auto& p : mesh.polygons) polygons.push_back(p.vertices);
+  return polygons;
+}
+
+TEST(PclLevelSetReconstruction, ReusedOrRunTwiceAtOnceGivesWhatEachGivesAlone) {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr sphere(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : lsr::sample_test_shape(lsr::make_test_shape("sphere"), 2000).points) {
+    sphere->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  }
+  const auto torus = torus_cloud<pcl::PointXYZ>(3000);
+  pcl::LevelSetReconstruction<pcl::PointXYZ> a, b;
+  const auto sphere_alone = polygons_of(a, sphere);
+  const auto torus_alone = polygons_of(b, torus);
+  // Reused: the sphere's object on the torus gives the torus's mesh, and back.
+  EXPECT_EQ(polygons_of(a, torus), torus_alone);
+  EXPECT_EQ(polygons_of(a, sphere), sphere_alone);
+  // Two objects on two threads at once.
+  std::vector<pcl::Indices> sphere_threaded, torus_threaded;
+  std::thread first([&] { sphere_threaded = polygons_of(a, sphere); });
+  std::thread second([&] { torus_threaded = polygons_of(b, torus); });
+  first.join();
+  second.join();
+  EXPECT_EQ(sphere_threaded, sphere_alone);
+  EXPECT_EQ(torus_threaded, torus_alone);
 }
 
 }  // namespace

@@ -43,7 +43,8 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
 
   /// @brief Outcome of the last reconstruct().
   struct Status {
-    bool ok = false;         ///< false when the input was rejected (see the PCL_ERROR log)
+    bool ok = false;         ///< false when the input was rejected (see message)
+    std::string message;     ///< why it was rejected, with a hint (also logged by PCL_ERROR)
     bool converged = false;  ///< the stopping test was met
     bool cancelled = false;  ///< the progress callback asked to stop
     int iterations = 0;      ///< time steps taken
@@ -103,8 +104,11 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// point has the same z, else 3.
   void setDimension(int dimension) { dimension_ = dimension; }
   int getDimension() const { return dimension_; }
-  /// @brief Refuse meshes predicted to need more vertices (default 0: what fits in 70% of the
-  /// machine's memory, about 4.8 million in 3D with 24 GiB).
+  /// @brief Refuse (reconstruct() fails with PCL_ERROR, nothing allocated) clouds and meshes
+  /// predicted to need more bytes (default 0: min(4 GiB, half the machine's memory)).
+  void setMaximumMemory(double bytes) { options_.max_memory = bytes; }
+  double getMaximumMemory() const { return options_.max_memory; }
+  /// @brief Refuse meshes predicted to need more vertices (default 0: from the memory limit).
   void setMaxMeshVertices(int n) { options_.max_vertices = n; }
   int getMaxMeshVertices() const { return options_.max_vertices; }
   /// @brief Threads for the distance queries (default 0: all cores).

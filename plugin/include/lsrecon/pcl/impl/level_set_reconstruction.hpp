@@ -25,6 +25,7 @@ void LevelSetReconstruction<PointInT>::reconstruct(pcl::PolygonMesh& output) {
               getClassName().c_str());
     output = pcl::PolygonMesh();
     status_ = Status();
+    status_.message = "no input cloud [hint: call setInputCloud first]";
     return;
   }
   SurfaceReconstruction<PointInT>::reconstruct(output);
@@ -39,6 +40,7 @@ void LevelSetReconstruction<PointInT>::reconstruct(pcl::PointCloud<PointInT>& po
     points.clear();
     polygons.clear();
     status_ = Status();
+    status_.message = "no input cloud [hint: call setInputCloud first]";
     return;
   }
   SurfaceReconstruction<PointInT>::reconstruct(points, polygons);
@@ -134,6 +136,8 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
     return true;
   } catch (const std::exception& e) {
     PCL_ERROR("[pcl::%s::performReconstruction] %s\n", getClassName().c_str(), e.what());
+    status_.ok = false;
+    status_.message = e.what();
     vertices.clear();
     polygons.clear();
     return false;
