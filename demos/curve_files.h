@@ -30,6 +30,17 @@ inline void write_polylines(const std::string& path, const Points<2>& vertices,
   });
 }
 
+/// @brief Points as text, "x y z" per line (2D input: z = 0), as lsrecon reads them back.
+inline void write_points(const std::string& path, const Points<3>& points) {
+  write_file_atomically(path, [&](const std::string& file) {
+    std::ofstream out(file);
+    if (!out) throw Error("cannot write " + path, "check that the folder exists and is writable");
+    out << std::setprecision(17);
+    for (const auto& p : points) out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    if (!out.flush()) throw Error("writing " + path + " failed", "check free disk space");
+  });
+}
+
 inline void write_svg(const std::string& path, const Points<2>& vertices,
                       const std::vector<std::vector<Index>>& loops, const Points<2>& data) {
   Vec<2> lo = Vec<2>::Constant(1e300), hi = Vec<2>::Constant(-1e300);

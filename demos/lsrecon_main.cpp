@@ -74,6 +74,7 @@ options (lengths are in the unit box the data is mapped into: its bounding ball 
   --max-mesh-vertices N         refuse larger meshes; 0 = from --max-memory       (default 0)
   --points N                    points of a --demo cloud                          (default 20000)
   --report FILE.json            write figures of the run as JSON
+  --save-points FILE.xyz        also write the input points (a --demo cloud) as text
   --quiet                       no progress on stderr
   --help, -h                    this text
   --version                     the version
@@ -87,7 +88,7 @@ std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 struct Cli {
-  std::string input, output, demo, report;
+  std::string input, output, demo, report, save_points;
   lsr::ReconstructionOptions solver;
   int dim = 0;
   long decimate = 0;
@@ -215,6 +216,8 @@ Cli parse(int argc, char** argv) {
       c.points = int(integer(a, v, 4, 5e7));
     } else if (a == "--report") {
       c.report = v;
+    } else if (a == "--save-points") {
+      c.save_points = v;
     } else {
       usage_error("unknown option " + a);
     }
@@ -403,9 +406,11 @@ void check_writable(const std::string& file, const std::string& input) {
 int run(const Cli& c) {
   check_writable(c.output, c.input);
   if (!c.report.empty()) check_writable(c.report, c.input);
+  if (!c.save_points.empty()) check_writable(c.save_points, c.input);
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
+  if (!c.save_points.empty()) lsr::demos::write_points(c.save_points, in.points);
   const double read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);

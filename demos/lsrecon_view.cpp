@@ -2,10 +2,12 @@
 /// @file lsrecon_view.cpp
 /// @brief Viewer: a point cloud and its reconstruction side by side in the PCL visualiser.
 ///   lsrecon-view CLOUD [RESULT] [--overlay] [--screenshot FILE.png]
-/// CLOUD: any input lsrecon reads. RESULT: a mesh (.ply .obj .stl .vtk) or, in 2D, the closed
+/// CLOUD: any input lsrecon reads. RESULT: a mesh (.ply .obj .off .stl .vtk) or, in 2D, the closed
 /// curves lsrecon wrote as .txt. --overlay draws the cloud over the result in one view;
 /// --screenshot renders once and saves a PNG instead of opening a window (use xvfb-run when no
 /// display is available).
+#include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
+#include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 
 #include <pcl/io/vtk_lib_io.h>
@@ -40,6 +42,31 @@ std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> read_loops(const std::string& p
   return loops;
 }
 
+// Every mesh format lsrecon writes: VTK through PCL, the others through OpenMesh.
+pcl::PolygonMesh read_result_mesh(const std::string& path) {
+  pcl::PolygonMesh mesh;
+  if (lsr::adapters::file_extension(path) == "vtk") {
+    if (pcl::io::loadPolygonFile(path, mesh) == 0) throw std::runtime_error("cannot read the mesh " + path);
+    return mesh;
+  }
+  lsr::adapters::TriMesh tri;
+  if (!OpenMesh::IO::read_mesh(tri, path)) throw std::runtime_error("cannot read the mesh " + path);
+  const lsr::LevelSetMesh<3> m = lsr::adapters::from_openmesh(tri);
+  pcl::PointCloud<pcl::PointXYZ> vertices;
+  for (const auto& v : m.vertices) vertices.push_back(pcl::PointXYZ(float(v.x()), float(v.y()), float(v.z())));
+  pcl::toPCLPointCloud2(vertices, mesh.cloud);
+  mesh.polygons = lsr::adapters::polygons_from_triangles(m.facets);
+  return mesh;
+}
+
+const char* const kUsage =
+    "usage: lsrecon-view CLOUD [RESULT] [--overlay] [--screenshot FILE.png]\n"
+    "  CLOUD   any point file lsrecon reads (.pcd .ply .xyz .txt .obj .off .stl)\n"
+    "  RESULT  a mesh lsrecon wrote (.ply .obj .off .stl .vtk) or its 2D curves (.txt)\n"
+    "  --overlay            the cloud over the result in one view (default: side by side)\n"
+    "  --screenshot FILE    render once to a PNG instead of opening a window (xvfb-run -a\n"
+    "                       without a display)\n";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,6 +74,10 @@ int main(int argc, char** argv) {
   bool overlay = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
     if (a == "--overlay") {
       overlay = true;
     } else if (a == "--screenshot" && i + 1 < argc) {
@@ -56,12 +87,12 @@ int main(int argc, char** argv) {
     } else if (result_path.empty()) {
       result_path = a;
     } else {
-      std::fprintf(stderr, "usage: lsrecon-view CLOUD [RESULT] [--overlay] [--screenshot FILE.png]\n");
+      std::fprintf(stderr, "lsrecon-view: unexpected argument '%s'\n%s", a.c_str(), kUsage);
       return 2;
     }
   }
   if (cloud_path.empty()) {
-    std::fprintf(stderr, "usage: lsrecon-view CLOUD [RESULT] [--overlay] [--screenshot FILE.png]\n");
+    std::fprintf(stderr, "lsrecon-view: expected CLOUD\n%s", kUsage);
     return 2;
   }
   try {
@@ -90,9 +121,7 @@ int main(int argc, char** argv) {
           viewer.addPolygon<pcl::PointXYZ>(loop, 0.1, 0.2, 0.7, "loop" + std::to_string(k++), right);
         }
       } else {
-        pcl::PolygonMesh mesh;
-        if (pcl::io::loadPolygonFile(result_path, mesh) == 0) throw std::runtime_error("cannot read the mesh " + result_path);
-        viewer.addPolygonMesh(mesh, "result", right);
+        viewer.addPolygonMesh(read_result_mesh(result_path), "result", right);
         viewer.setPointCloudRenderingProperties(pcl::visualization::PCL_VISUALIZER_COLOR, 0.85, 0.75, 0.55, "result", right);
       }
       if (right != left) viewer.addText(result_path, 10, 10, 14, 0, 0, 0, "result label", right);

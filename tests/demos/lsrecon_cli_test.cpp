@@ -134,4 +134,21 @@ TEST_F(Cli, CommandLineErrorsExitWithTwoAndSayWhatToChange) {
   EXPECT_NE(help.output.find("--resolution"), std::string::npos);
 }
 
+TEST_F(Cli, SavesItsCloudAndAnswersVersionHelpAndInlineValues) {
+  CliRun r = run("--demo=sphere --points=3000 --resolution=32 --quiet --save-points " + path("s.xyz") + " " + path("s.off"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const lsr::adapters::PointFile saved = lsr::adapters::read_point_file(path("s.xyz"));
+  EXPECT_EQ(saved.points.size(), 3000u);
+  // The saved cloud gives the same mesh as the demo that generated it.
+  r = run(path("s.xyz") + " " + path("again.off") + " --resolution 32 --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_EQ(read("s.off"), read("again.off"));
+  r = run("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.output.rfind("lsrecon ", 0), 0u) << r.output;
+  const int view = std::system((std::string(LSRECON_VIEW) + " --help > " + path("view.txt")).c_str());
+  EXPECT_EQ(WEXITSTATUS(view), 0);
+  EXPECT_NE(read("view.txt").find(".off"), std::string::npos);
+}
+
 }  // namespace
