@@ -14,6 +14,8 @@
 #include "lsrecon/core/surface_topology.h"
 #include "stopwatch.h"
 
+#include <nlohmann/json.hpp>
+
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -322,38 +324,71 @@ struct Outcome {
 
 template <int D>
 void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
-                  double total, const std::map<std::string, double>& extra_seconds) {
+                  double total, const std::vector<std::pair<std::string, double>>& extra_seconds) {
+  using nlohmann::json;
+  const lsr::ReconstructionOptions& o = c.solver;
+  // The options as given (0 = automatic); lengths in the unit box the data is mapped into.
+  const json options = {{"resolution", o.h_min > 0.0 ? 1.0 / o.h_min : 0.0},
+                        {"max_resolution", o.max_resolution},
+                        {"max_size_unit_box", o.h_max},
+                        {"grading", o.grading},
+                        {"alpha", o.alpha},
+                        {"curvature_weight", o.curvature_weight},
+                        {"time_step", o.time_step},
+                        {"max_iterations", o.max_iterations},
+                        {"tolerance_unit_box", o.tolerance},
+                        {"hole_radius_unit_box", o.hole_radius},
+                        {"fit_surface", o.fit_surface},
+                        {"outlier_factor", o.outlier_factor},
+                        {"renormalization_interval", o.renormalization_interval},
+                        {"initial_front", o.initial_front == lsr::InitialFront::tagged      ? "tagged"
+                                          : o.initial_front == lsr::InitialFront::enclosing ? "enclose"
+                                                                                             : "inside"},
+                        {"max_memory_bytes", o.max_memory},
+                        {"max_mesh_vertices", o.max_vertices},
+                        {"threads", o.threads}};
+  // Stage times in pipeline order: read, the solver's stages, then what follows them.
+  json stages = json::array();
+  stages.push_back({{"stage", "read"}, {"seconds", extra_seconds.front().second}});
+  for (const auto& stage : r.stages) stages.push_back({{"stage", stage}, {"seconds", r.seconds.at(stage)}});
+  for (std::size_t k = 1; k < extra_seconds.size(); ++k) {
+    stages.push_back({{"stage", extra_seconds[k].first}, {"seconds", extra_seconds[k].second}});
+  }
+  const char* status = r.status == lsr::ReconstructionStatus::converged       ? "converged"
+                       : r.status == lsr::ReconstructionStatus::not_converged ? "not_converged"
+                                                                              : "cancelled";
+  json report = {{"lsrecon_version", LSRECON_VERSION},
+                 {"input", c.demo.empty() ? c.input : "demo:" + c.demo},
+                 {"input_points", in.points.size() + in.skipped},
+                 {"skipped_points", in.skipped + r.skipped_points},
+                 {"outlier_points", r.outlier_points},
+                 {"dimension", D},
+                 {"options", options},
+                 {"h_min_unit_box", r.h_min},
+                 {"mesh_vertices", r.mesh_vertices},
+                 {"mesh_simplices", r.mesh_simplices},
+                 {"time_steps", r.iterations},
+                 {"best_step", r.best_iteration},
+                 {"status", status},
+                 {"converged", r.status == lsr::ReconstructionStatus::converged},
+                 {"residual_input_units", r.residual},
+                 {"tolerance_input_units", r.tolerance},
+                 {"unreached_points", r.unreached_points},
+                 {"spacing_input_units", r.spacing},
+                 {"noise_input_units", r.noise},
+                 {"tagged_start", r.tagged_start},
+                 {"stage_seconds", stages},
+                 {"total_seconds", total},
+                 {"peak_memory_mib", peak_memory_mib()},
+                 {"output", c.output},
+                 {"output_vertices", out.vertices},
+                 {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
+                 {"components", out.components},
+                 {"watertight", out.watertight}};
   lsr::write_file_atomically(c.report, [&](const std::string& file) {
     std::ofstream j(file);
     if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
-    j.precision(10);
-    j << "{\n  \"input\": \"" << (c.demo.empty() ? c.input : "demo:" + c.demo) << "\",\n"
-      << "  \"input_points\": " << in.points.size() + in.skipped << ",\n"
-      << "  \"skipped_points\": " << in.skipped + r.skipped_points << ",\n"
-      << "  \"outlier_points\": " << r.outlier_points << ",\n"
-      << "  \"dimension\": " << D << ",\n  \"h_min\": " << r.h_min << ",\n"
-      << "  \"mesh_vertices\": " << r.mesh_vertices << ",\n  \"mesh_simplices\": " << r.mesh_simplices << ",\n"
-      << "  \"time_steps\": " << r.iterations << ",\n  \"best_step\": " << r.best_iteration << ",\n"
-      << "  \"converged\": " << (r.status == lsr::ReconstructionStatus::converged ? "true" : "false") << ",\n"
-      << "  \"residual\": " << r.residual << ",\n  \"tolerance\": " << r.tolerance << ",\n"
-      << "  \"unreached_points\": " << r.unreached_points << ",\n  \"spacing\": " << r.spacing << ",\n"
-      << "  \"tagged_start\": " << (r.tagged_start ? "true" : "false") << ",\n"
-      << "  \"noise\": " << r.noise << ",\n  \"seconds\": {";
-    std::map<std::string, double> seconds = r.seconds;
-    for (const auto& [k, v] : extra_seconds) seconds[k] = v;
-    bool first = true;
-    for (const auto& [k, v] : seconds) {
-      j << (first ? "" : ",") << "\n    \"" << k << "\": " << v;
-      first = false;
-    }
-    j << "\n  },\n  \"total_seconds\": " << total << ",\n  \"peak_memory_mib\": " << peak_memory_mib() << ",\n"
-      << "  \"output\": \"" << c.output << "\",\n  \"output_vertices\": " << out.vertices << ",\n";
-    if (D == 2) {
-      j << "  \"curves\": " << out.curves << ",\n";
-    } else {
-      j << "  \"output_faces\": " << out.faces << ",\n";
-    }
-    j << "  \"components\": " << out.components << ",\n  \"watertight\": " << (out.watertight ? "true" : "false") << "\n}\n";
+    j << report.dump(2) << '\n';
     if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
   });
 }
@@ -444,11 +479,12 @@ int run(const Cli& c) {
     }
     out = {r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true};
     const double write_seconds = clock.lap();
-    if (!c.report.empty()) write_report(c, in, r, out, total.lap(), {{"read", read_seconds}, {"write", write_seconds}});
+    const double seconds = total.lap();
+    if (!c.report.empty()) write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"write", write_seconds}});
     std::printf("%s: %zu closed curve(s), %zu vertices, %s after %d steps, %.1f s -> %s\n",
                 c.demo.empty() ? c.input.c_str() : c.demo.c_str(), r.loops.size(), r.surface.vertices.size(),
                 r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations,
-                total.lap() + read_seconds, c.output.c_str());
+                seconds, c.output.c_str());
     return 0;
   }
   const auto r = lsr::reconstruct<3>(in.points, c.solver, printer(c.quiet));

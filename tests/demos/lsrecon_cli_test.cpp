@@ -10,10 +10,12 @@
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -58,16 +60,29 @@ TEST_F(Cli, WritesEveryMeshFormatAndTheReport) {
     ASSERT_EQ(r.status, 0) << r.output;
     expect_closed_mesh(path(out), 1);
   }
-  std::ifstream in(path("r.json"));
-  std::stringstream s;
-  s << in.rdbuf();
-  const std::string json = s.str();
-  for (const char* field : {"input_points", "dimension", "h_min", "mesh_vertices", "mesh_simplices", "time_steps",
-                            "converged", "residual", "seconds", "total_seconds", "peak_memory_mib",
-                            "output_vertices", "output_faces", "components", "watertight"}) {
-    EXPECT_NE(json.find(std::string("\"") + field + "\""), std::string::npos) << field;
+  // Valid JSON whatever the path holds; units in the names; stages in pipeline order.
+  const nlohmann::json j = nlohmann::json::parse(read("r.json"));
+  for (const char* field : {"input_points", "dimension", "h_min_unit_box", "mesh_vertices", "mesh_simplices", "time_steps",
+                            "status", "converged", "residual_input_units", "tolerance_input_units", "stage_seconds",
+                            "total_seconds", "peak_memory_mib", "output_vertices", "output_faces", "components",
+                            "watertight", "options"}) {
+    EXPECT_TRUE(j.contains(field)) << field;
   }
-  EXPECT_NE(json.find("\"watertight\": true"), std::string::npos);
+  EXPECT_TRUE(j["watertight"].get<bool>());
+  EXPECT_EQ(j["options"]["resolution"].get<double>(), 32.0);
+  std::vector<std::string> stages;
+  for (const auto& s : j["stage_seconds"]) stages.push_back(s["stage"].get<std::string>());
+  ASSERT_GE(stages.size(), 4u);
+  EXPECT_EQ(stages.front(), "read");
+  EXPECT_EQ(stages.back(), "write");
+  EXPECT_LT(std::find(stages.begin(), stages.end(), "mesh") - stages.begin(),
+            std::find(stages.begin(), stages.end(), "solve") - stages.begin());
+  // A path with a quote and a backslash stays valid JSON.
+  const std::string odd = path("a\"b\\c.json");
+  ASSERT_EQ(run("--demo sphere --points 3000 --resolution 32 --quiet " + path("s.ply") + " --report '" + odd + "'").status, 0);
+  std::ifstream odd_in(odd);
+  const nlohmann::json o = nlohmann::json::parse(odd_in);
+  EXPECT_EQ(o["output"].get<std::string>(), path("s.ply"));
 }
 
 TEST_F(Cli, DecimatesToTheRequestedFaceCount) {
