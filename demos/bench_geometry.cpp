@@ -14,12 +14,6 @@
 
 namespace {
 
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
-
 }  // namespace
 
 int main() {
@@ -46,7 +40,7 @@ int main() {
       std::printf("%8d %6d %10zu %10zu %7.2f %8.3f %8.3f %8.3f %8.3f %9zu %9.0f\n", n, r,
                   m.mesh.vertices.size(), m.mesh.simplices.size(),
                   100.0 * m.mesh.vertices.size() / m.stats.uniform_vertices, t_index, t_mesh,
-                  t_dist, t_extract, s.facets.size(), peak_rss_mib());
+                  t_dist, t_extract, s.facets.size(), lsr::demos::peak_memory_mib());
     }
   }
   return 0;

@@ -39,13 +39,6 @@ const std::vector<Case>& cases() {
   return all;
 }
 
-const double kPi = std::acos(-1.0);
-
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
 
 template <int D>
 void print(const Case& c, const lsr::ReconstructionResult<D>& r, double total, double error) {
@@ -54,7 +47,7 @@ void print(const Case& c, const lsr::ReconstructionResult<D>& r, double total, d
               c.name.c_str(), c.points, 1.0 / r.h_min, r.mesh_vertices, r.mesh_simplices, r.iterations,
               r.status == lsr::ReconstructionStatus::converged ? "yes" : "no",
               double(r.solver_iterations) / std::max(1, r.iterations), s("mesh"), s("distance"), s("operators"),
-              s("setup"), s("solve"), s("renormalize"), s("fit") + s("extract"), total, peak_rss_mib(), error / r.tolerance);
+              s("setup"), s("solve"), s("renormalize"), s("fit") + s("extract"), total, lsr::demos::peak_memory_mib(), error / r.tolerance);
   std::fflush(stdout);
 }
 
@@ -94,12 +87,12 @@ void run_case(const Case& c) {
   } else {
     // Section 6.4.2: Box-Muller noise, sigma = 2 d_min; the error column is against the clean circle.
     const lsr::Points<2> clean = lsr::Circle{lsr::Vec<2>(0, 0), 1.0}.sample(c.points);
-    const double sigma = 2 * 2 * std::sin(kPi / c.points);
+    const double sigma = 2 * 2 * std::sin(lsr::kPi / c.points);
     lsr::Points<2> noisy;
     unsigned state = 12345;
     auto uniform = [&] { state = state * 1664525u + 1013904223u; return (state + 1.0) / 4294967297.0; };
     for (const auto& p : clean) {
-      const double r = std::sqrt(-2 * std::log(uniform())), a = 2 * kPi * uniform();
+      const double r = std::sqrt(-2 * std::log(uniform())), a = 2 * lsr::kPi * uniform();
       noisy.push_back(p + sigma * r * lsr::Vec<2>(std::cos(a), std::sin(a)));
     }
     run<2>(c, noisy, [](const lsr::Vec<2>& p) { return p.norm() - 1.0; });

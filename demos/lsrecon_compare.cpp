@@ -226,9 +226,9 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c,
     gp3.setSearchRadius(0.05 * c.diagonal);
     gp3.setMu(2.5);
     gp3.setMaximumNearestNeighbors(100);
-    gp3.setMaximumSurfaceAngle(M_PI / 4);
-    gp3.setMinimumAngle(M_PI / 18);
-    gp3.setMaximumAngle(2 * M_PI / 3);
+    gp3.setMaximumSurfaceAngle(lsr::kPi / 4);
+    gp3.setMinimumAngle(lsr::kPi / 18);
+    gp3.setMaximumAngle(2 * lsr::kPi / 3);
     gp3.setNormalConsistency(false);
     gp3.setInputCloud(cloud);
     gp3.setSearchMethod(tree);
@@ -271,12 +271,6 @@ void write_convergence_svg(const std::string& path, const std::string& title, co
   svg << "\"/>\n<text x=\"" << w / 2 << "\" y=\"" << h - 10 << "\">time step (" << residuals.size() << ")</text>\n</svg>\n";
 }
 
-double peak_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;
-}
-
 // Child: one case, one method; prints one CSV row.
 // A user's file: the points only. Without ground truth the distance columns stay empty.
 lsr::demos::CompareCase file_case(const std::string& path) {
@@ -303,7 +297,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   lsr::demos::Stopwatch clock;
   const Produced p = run_method(method, c, s);
   const double seconds = clock.lap();
-  const double memory = peak_mib();
+  const double memory = lsr::demos::peak_memory_mib();
   lsr::Points<3> vertices;
   std::vector<std::array<lsr::Index, 3>> triangles;
   weld(p.mesh, c.diagonal, vertices, triangles);

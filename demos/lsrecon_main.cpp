@@ -242,7 +242,6 @@ Cli parse(int argc, char** argv) {
   return c;
 }
 
-const double kPi = std::acos(-1.0);
 
 // The input as 3D points and its dimension.
 struct Input {
@@ -310,12 +309,6 @@ lsr::ProgressCallback printer(bool quiet) {
   };
 }
 
-double peak_memory_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
-}
-
 struct Outcome {
   std::size_t vertices = 0, faces = 0, curves = 0;
   int components = 0;
@@ -379,7 +372,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"tagged_start", r.tagged_start},
                  {"stage_seconds", stages},
                  {"total_seconds", total},
-                 {"peak_memory_mib", peak_memory_mib()},
+                 {"peak_memory_mib", lsr::demos::peak_memory_mib()},
                  {"output", c.output},
                  {"output_vertices", out.vertices},
                  {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
@@ -391,6 +384,23 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
     j << report.dump(2) << '\n';
     if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
   });
+}
+
+// Why a run stopped short, from what it measured: the step limit, noise, or points never reached.
+template <int D>
+std::string not_converged_hint(const lsr::ReconstructionResult<D>& r) {
+  std::ostringstream s;
+  s.precision(3);
+  if (r.best_iteration == r.iterations) {
+    s << "it was still improving at the last step: raise --max-iterations";
+  } else if (r.noise > 0.25 * r.spacing) {  // 4 sigma beyond the tolerance: thousands of points
+    s << "the points are noisy or fill a volume (noise " << r.noise << " against a spacing of " << r.spacing
+      << "): raise --tolerance or --curvature-weight";
+  } else {
+    s << r.unreached_points << " point(s) stay beyond the tolerance (a cluster inside the surface?): check "
+      << "them, or raise --tolerance";
+  }
+  return s.str();
 }
 
 template <int D>
@@ -409,9 +419,8 @@ void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
   }
   if (r.status == lsr::ReconstructionStatus::not_converged) {
     std::fprintf(stderr, "lsrecon: not converged: the best iterate (step %d, residual %.3g > tolerance %.3g) is "
-                         "written [hint: noisy data stays above the tolerance; raise --curvature-weight or "
-                         "--tolerance, or --max-iterations if it was still improving]\n",
-                 r.best_iteration, r.residual, r.tolerance);
+                         "written [hint: %s]\n",
+                 r.best_iteration, r.residual, r.tolerance, not_converged_hint(r).c_str());
   }
 }
 
@@ -454,7 +463,7 @@ int run(const Cli& c) {
   if (c.dim == 0 && distinct_points(in.points) <= 3) in.dim = is_curve_output(out_ext) ? 2 : 3;
   if (in.dim == 2 && is_mesh_output(out_ext)) {
     throw lsr::InvalidInput("the input is planar (2D), so the result is curves, not a mesh",
-                            "write .svg or .txt, or pass --dim 3 for a flat 3D shape");
+                            "write .svg or .txt (closed curves in the plane); a closed surface needs points that are not all in one plane");
   }
   if (in.dim == 3 && is_curve_output(out_ext)) {
     throw lsr::InvalidInput("the input is 3D, so the result is a surface",

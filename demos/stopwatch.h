@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file stopwatch.h
-/// @brief Wall-clock timing of pipeline stages for the demos and benchmarks.
+/// @brief Wall-clock timing of pipeline stages and peak memory, for the demos and benchmarks.
 #pragma once
+
+#include <sys/resource.h>
 
 #include <chrono>
 
@@ -20,5 +22,12 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
+
+/// @brief Peak resident memory of this process so far, MiB.
+inline double peak_memory_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
 
 }  // namespace lsr::demos

@@ -111,7 +111,7 @@ void validate(const AdaptiveMeshOptions& o) {
                        "use a grading around 1 (smaller widens the fine band)");
   }
   if (o.max_vertices <= 0) {
-    throw InvalidInput("max_vertices must be positive", "leave it at its default (20 million)");
+    throw InvalidInput("max_vertices must be positive", "pass a positive count (lsr::reconstruct sets it from max_memory)");
   }
 }
 

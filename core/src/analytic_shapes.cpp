@@ -6,7 +6,6 @@
 
 namespace lsr {
 namespace {
-const double kPi = std::acos(-1.0);
 }
 
 Points<2> Circle::sample(int n) const {

@@ -87,7 +87,8 @@ void require_spanning(const Points<D>& points) {
     why << "the points are " << (D == 2 ? "colinear" : "coplanar or colinear") << " (thinner than 1e-6 of their extent "
         << std::setprecision(3) << extent << "): they do not enclose a region";
     throw InvalidInput(why.str(),
-                       D == 3 ? "for planar data reconstruct curves in 2D (dimension 2)"
+                       D == 3 ? "planar points give closed curves: reconstruct them in 2D (reconstruct<2>; setDimension(2) in the "
+                                "PCL class; an .svg or .txt output in the command line)"
                               : "a closed curve needs points that are not on one line");
   }
 }
@@ -422,7 +423,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   require_spanning(points);
   auto box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
   NearestPointIndex<D> data(box.to_unit(points));
-  clock.end("normalize");
+  clock.end("unit box");
 
   progress.update("sampling", -1.0);
   LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);

@@ -13,7 +13,6 @@
 namespace lsr {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
 
 // Torus around axis `axis` (0 = x, 2 = z) through c.
 double torus(const Vec<3>& p, const Vec<3>& c, double major, double minor, int axis = 2) {

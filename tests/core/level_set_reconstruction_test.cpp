@@ -276,7 +276,7 @@ TEST(LevelSetReconstruction, MaxResolutionCapsTheLocalMeshSize) {
 TEST(LevelSetReconstruction, StagesAreListedOnceInPipelineOrder) {
   const auto r = reconstruct<2>(Circle{Vec<2>(0, 0), 1.0}.sample(500));
   ASSERT_EQ(r.stages.size(), r.seconds.size());
-  const std::vector<std::string> first = {"normalize", "sampling", "mesh", "distance", "operators", "setup", "solve"};
+  const std::vector<std::string> first = {"unit box", "sampling", "mesh", "distance", "operators", "setup", "solve"};
   ASSERT_GE(r.stages.size(), first.size());
   EXPECT_EQ(std::vector<std::string>(r.stages.begin(), r.stages.begin() + first.size()), first);
   for (const auto& stage : r.stages) EXPECT_EQ(std::count(r.stages.begin(), r.stages.end(), stage), 1) << stage;

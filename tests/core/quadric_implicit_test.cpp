@@ -43,7 +43,7 @@ TEST(QuadricImplicit, SphereErrorIsTheFourthOrderTermOfItsNeighbourhood) {
   // points lie within 2 r with overwhelming probability (a disc of radius 2 r holds 120 on
   // average), and a blended fit is evaluated within that radius of its centre. The height
   // function's first term a quadric cannot follow is t^4 / (8 R^3).
-  const double r = std::sqrt(30.0 / (std::acos(-1.0) * n / (4 * std::acos(-1.0) * R * R)));
+  const double r = std::sqrt(30.0 / (kPi * n / (4 * kPi * R * R)));
   const double bound = std::pow(2 * r, 4) / (8 * R * R * R);
   Points<3> q;
   std::vector<double> truth;
@@ -64,7 +64,7 @@ TEST(QuadricImplicit, CircleIn2D) {
   const int n = 2000;
   Points<2> p, normals;
   for (int i = 0; i < n; ++i) {
-    const double t = 2 * std::acos(-1.0) * (i + 0.37 * std::sin(i)) / n;
+    const double t = 2 * kPi * (i + 0.37 * std::sin(i)) / n;
     normals.emplace_back(std::cos(t), std::sin(t));
     p.push_back(0.3 * normals.back());
   }
@@ -75,7 +75,7 @@ TEST(QuadricImplicit, CircleIn2D) {
   f.project(q);
   // Ten points span r = 5 spacings of 0.3 * 2 pi / n; as on the sphere, the bound is the
   // quartic term over twice that radius.
-  const double r = 5 * 0.3 * 2 * std::acos(-1.0) / n;
+  const double r = 5 * 0.3 * 2 * kPi / n;
   const double bound = std::pow(2 * r, 4) / (8 * 0.3 * 0.3 * 0.3);
   EXPECT_NEAR(q[0].norm(), 0.3, bound);
   EXPECT_NEAR(q[1].norm(), 0.3, bound);

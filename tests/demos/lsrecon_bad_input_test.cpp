@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -250,6 +251,44 @@ TEST_F(BadInput, InterruptedRunsWriteNothing) {
     EXPECT_FALSE(fs::exists(out)) << signal_number;
     expect_no_temporary_file();
   }
+}
+
+// Each hint of a run that stops short names the cause it measured.
+TEST_F(BadInput, NotConvergedHintsNameTheMeasuredCause) {
+  CliRun r = run("--demo sphere --points 3000 --max-iterations 2 --quiet " + path("a.ply"));
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("still improving at the last step: raise --max-iterations"), std::string::npos) << r.output;
+  // Gaussian noise of 3% of the radius on 5,000 points (spacing about 5%).
+  std::ofstream noisy(path("noisy.xyz"));
+  std::mt19937 rng(5);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (const auto& p : lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(5000)) {
+    const lsr::Vec<3> q = p * (1.0 + 0.03 * gauss(rng));
+    noisy << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+  }
+  noisy.close();
+  r = run(path("noisy.xyz") + " " + path("b.ply") + " --quiet");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("noisy or fill a volume"), std::string::npos) << r.output;
+  // A tight cluster deep inside a sphere: never reached.
+  std::ofstream cluster(path("cluster.xyz"));
+  for (const auto& p : lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(3000)) cluster << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (int i = 0; i < 50; ++i) cluster << 1e-3 * (i % 5) << ' ' << 1e-3 * (i / 5 % 5) << ' ' << 1e-3 * (i / 25) << '\n';
+  cluster.close();
+  r = run(path("cluster.xyz") + " " + path("c.ply") + " --quiet");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("point(s) stay beyond the tolerance"), std::string::npos) << r.output;
+  // Planar input to a mesh: curves, not a circular hint to --dim 3.
+  std::ofstream flat(path("flat.xyz"));
+  for (const auto& p : lsr::Circle{lsr::Vec<2>(0, 0), 1.0}.sample(500)) flat << p.x() << ' ' << p.y() << " 0\n";
+  flat.close();
+  r = run(path("flat.xyz") + " " + path("d.ply") + " --quiet");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("write .svg or .txt"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("--dim 3"), std::string::npos) << r.output;
+  r = run(path("flat.xyz") + " " + path("d.ply") + " --quiet --dim 3");
+  EXPECT_EQ(r.status, 1) << r.output;
+  EXPECT_NE(r.output.find("an .svg or .txt output"), std::string::npos) << r.output;
 }
 
 }  // namespace

@@ -12,6 +12,8 @@
 
 namespace lsr {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 /// Index of a vertex or simplex. 32 bits: meshes are capped far below 2^31 entries.
 using Index = std::int32_t;
 
