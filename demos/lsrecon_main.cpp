@@ -122,8 +122,8 @@ double integer(const std::string& flag, const char* text, double lo, double hi) 
 }
 
 bool is_2d_shape(const std::string& s) { return s == "star" || s == "three-shapes"; }
-bool is_curve_output(const std::string& ext) { return ext == "svg" || ext == "txt"; }
-bool is_mesh_output(const std::string& ext) { return ext == "ply" || ext == "obj" || ext == "off" || ext == "stl"; }
+bool is_curve_output(const std::string& ext) { return lsr::adapters::has_role(ext, lsr::adapters::FileRole::curve_output); }
+bool is_mesh_output(const std::string& ext) { return lsr::adapters::has_role(ext, lsr::adapters::FileRole::mesh_output); }
 
 Cli parse(int argc, char** argv) {
   Cli c;
@@ -236,7 +236,8 @@ Cli parse(int argc, char** argv) {
   }
   const std::string out = lsr::adapters::file_extension(c.output);
   if (!is_curve_output(out) && !is_mesh_output(out)) {
-    usage_error("cannot write '" + c.output + "': use .ply .obj .off .stl (3D) or .svg .txt (2D)");
+    usage_error("cannot write '" + c.output + "': use " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output) +
+                " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
   }
   if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) usage_error("--decimate and --smooth apply to 3D meshes only");
   return c;
@@ -273,7 +274,7 @@ Input generate(const Cli& c) {
 Input read_input(const Cli& c) {
   Input in;
   const std::string ext = lsr::adapters::file_extension(c.input);
-  if (ext == "pgm" || ext == "ppm" || ext == "pbm" || ext == "pnm" || ext == "png") {
+  if (lsr::adapters::has_role(ext, lsr::adapters::FileRole::image_input)) {
     for (const auto& p : lsr::demos::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
     in.dim = 2;
     return in;
@@ -281,12 +282,7 @@ Input read_input(const Cli& c) {
   lsr::adapters::PointFile file = lsr::adapters::read_point_file(c.input);
   in.points = std::move(file.points);
   in.skipped = file.skipped;
-  bool planar = file.planar_text;
-  if (!planar && !in.points.empty()) {
-    const double z = in.points[0].z();
-    planar = std::all_of(in.points.begin(), in.points.end(), [z](const lsr::Vec<3>& p) { return p.z() == z; });
-  }
-  in.dim = planar ? 2 : 3;
+  in.dim = file.planar_text ? 2 : lsr::adapters::detect_dimension(in.points);
   return in;
 }
 

@@ -51,8 +51,8 @@ LevelSetMesh<3> from_openmesh(const TriMesh& mesh) {
 
 void write_mesh_file(const TriMesh& mesh, const std::string& path) {
   const std::string ext = file_extension(path);
-  if (ext != "ply" && ext != "obj" && ext != "off" && ext != "stl") {
-    throw Error("cannot write a mesh to '" + path + "'", "use an output ending in .ply, .obj, .off or .stl");
+  if (!has_role(ext, FileRole::mesh_output)) {
+    throw Error("cannot write a mesh to '" + path + "'", "use an output ending in " + extensions(FileRole::mesh_output));
   }
   OpenMesh::IO::Options options;
   if (ext == "ply" || ext == "stl") options += OpenMesh::IO::Options::Binary;

@@ -30,6 +30,22 @@ std::string file_extension(const std::string& path) {
 
 namespace {
 
+struct Format {
+  const char* extension;
+  std::vector<FileRole> roles;
+};
+
+const std::vector<Format>& formats() {
+  using R = FileRole;
+  static const std::vector<Format> table = {
+      {"xyz", {R::point_input}}, {"txt", {R::point_input, R::curve_output}}, {"xy", {R::point_input}},
+      {"pts", {R::point_input}}, {"pcd", {R::point_input}}, {"ply", {R::point_input, R::mesh_output}},
+      {"obj", {R::point_input, R::mesh_output}}, {"off", {R::point_input, R::mesh_output}},
+      {"stl", {R::point_input, R::mesh_output}}, {"pgm", {R::image_input}}, {"ppm", {R::image_input}},
+      {"pbm", {R::image_input}}, {"pnm", {R::image_input}}, {"png", {R::image_input}}, {"svg", {R::curve_output}}};
+  return table;
+}
+
 bool is_number(const std::string& token, double& value) {
   char* end = nullptr;
   value = std::strtod(token.c_str(), &end);
@@ -123,25 +139,45 @@ PointFile read_pcl(const std::string& path, Load load) {
 
 }  // namespace
 
+int detect_dimension(const Points<3>& points) {
+  const bool planar = std::all_of(points.begin(), points.end(), [&](const Vec<3>& p) { return p.z() == points[0].z(); });
+  return planar && !points.empty() ? 2 : 3;
+}
+
+bool has_role(const std::string& ext, FileRole role) {
+  for (const Format& f : formats()) {
+    if (ext == f.extension) return std::find(f.roles.begin(), f.roles.end(), role) != f.roles.end();
+  }
+  return false;
+}
+
+std::string extensions(FileRole role) {
+  std::string list;
+  for (const Format& f : formats()) {
+    if (has_role(f.extension, role)) list += (list.empty() ? "." : " .") + std::string(f.extension);
+  }
+  return list;
+}
+
 PointFile read_point_file(const std::string& path) {
   check_declared_size(path);
   const std::string ext = file_extension(path);
-  const bool text = ext == "xyz" || ext == "txt" || ext == "xy" || ext == "pts";
-  const bool mesh = ext == "obj" || ext == "off" || ext == "stl";
-  if (!text && !mesh && ext != "pcd" && ext != "ply") {
+  if (!has_role(ext, FileRole::point_input)) {
     throw Error("unknown input format '" + ext + "' (" + path + ")",
-                "use .pcd, .ply, .xyz, .txt, .obj, .off or .stl (and .pgm / .png images for 2D)");
+                "use " + extensions(FileRole::point_input) + " (or an image for 2D: " + extensions(FileRole::image_input) + ")");
   }
-  if (text) return read_text(path);
   if (ext == "pcd") {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPCDFile(p, c); });
   }
   if (ext == "ply") {
     return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPLYFile(p, c); });
   }
-  PointFile out;
-  out.points = read_mesh_file_vertices(path);
-  return out;
+  if (ext == "obj" || ext == "off" || ext == "stl") {
+    PointFile out;
+    out.points = read_mesh_file_vertices(path);
+    return out;
+  }
+  return read_text(path);
 }
 
 }  // namespace lsr::adapters

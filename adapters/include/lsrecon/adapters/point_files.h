@@ -20,6 +20,25 @@ struct PointFile {
 /// @brief The lower-case extension of a path without the dot ("" when it has none).
 std::string file_extension(const std::string& path);
 
+/// @brief 2 when every point has the same z (closed curves in that plane), else 3: the one rule
+/// of the command line and the PCL class.
+int detect_dimension(const Points<3>& points);
+
+/// @brief What lsrecon does with a file format: one table for the readers, the writers, the
+/// command line and the viewer.
+enum class FileRole {
+  point_input,   ///< xyz txt xy pts pcd ply obj off stl
+  image_input,   ///< pgm ppm pbm pnm png (2D: dark pixels)
+  mesh_output,   ///< ply obj off stl
+  curve_output,  ///< svg txt
+};
+
+/// @brief True if files with extension `ext` (lower case, no dot) play `role`.
+bool has_role(const std::string& ext, FileRole role);
+
+/// @brief The extensions of a role for messages: ".a .b .c".
+std::string extensions(FileRole role);
+
 /// @brief Reads the points of a file, choosing the reader by extension.
 /// @throw lsr::Error for a missing, unreadable or corrupt file or an unknown extension; the
 /// message names the file, the line where relevant, and the accepted formats.

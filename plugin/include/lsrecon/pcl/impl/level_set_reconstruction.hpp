@@ -6,6 +6,7 @@
 
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/pcl_points.h"
+#include "lsrecon/adapters/point_files.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 
 #include <pcl/common/io.h>
@@ -97,7 +98,7 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       z_min = std::min(z_min, p.z());
       z_max = std::max(z_max, p.z());
     }
-    status_.dimension = dimension_ != 0 ? dimension_ : (z_max == z_min ? 2 : 3);
+    status_.dimension = dimension_ != 0 ? dimension_ : lsr::adapters::detect_dimension(in.points);
     if (status_.dimension != 2 && status_.dimension != 3) {
       throw lsr::InvalidInput("dimension " + std::to_string(dimension_) + " is not 0, 2 or 3",
                               "use setDimension(0) (automatic), 2 or 3");
