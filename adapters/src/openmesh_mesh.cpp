@@ -3,6 +3,7 @@
 #include "lsrecon/adapters/openmesh_mesh.h"
 
 #include "lsrecon/adapters/point_files.h"
+#include "double_mesh_writer.h"
 
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/errors.h"
@@ -25,12 +26,18 @@ TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals) {
   handles.reserve(surface.vertices.size());
   for (std::size_t i = 0; i < surface.vertices.size(); ++i) {
     const Vec<3>& p = surface.vertices[i];
-    handles.push_back(mesh.add_vertex(TriMesh::Point(float(p.x()), float(p.y()), float(p.z()))));
+    handles.push_back(mesh.add_vertex(TriMesh::Point(p.x(), p.y(), p.z())));
     if (mesh.has_vertex_normals() && i < normals.size()) {
-      mesh.set_normal(handles.back(), TriMesh::Normal(float(normals[i].x()), float(normals[i].y()), float(normals[i].z())));
+      mesh.set_normal(handles.back(), TriMesh::Normal(normals[i].x(), normals[i].y(), normals[i].z()));
     }
   }
-  for (const auto& f : surface.facets) mesh.add_face(handles[f[0]], handles[f[1]], handles[f[2]]);
+  for (std::size_t f = 0; f < surface.facets.size(); ++f) {
+    const auto& t = surface.facets[f];
+    if (!mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid()) {
+      throw Error("OpenMesh refused triangle " + std::to_string(f) + " (the surface is not a manifold there)",
+                  "report this input: lsrecon's surfaces are manifold by construction");
+    }
+  }
   return mesh;
 }
 
@@ -54,13 +61,10 @@ void write_mesh_file(const TriMesh& mesh, const std::string& path) {
   if (!has_role(ext, FileRole::mesh_output)) {
     throw Error("cannot write a mesh to '" + path + "'", "use an output ending in " + extensions(FileRole::mesh_output));
   }
-  OpenMesh::IO::Options options;
-  if (ext == "ply" || ext == "stl") options += OpenMesh::IO::Options::Binary;
-  if (ext != "stl" && mesh.has_vertex_normals()) options += OpenMesh::IO::Options::VertexNormal;
   write_file_atomically(path, [&](const std::string& temporary) {
-    if (!OpenMesh::IO::write_mesh(mesh, temporary, options, 9)) {
-      throw Error("writing " + path + " failed", "check that the folder exists, is writable and has space");
-    }
+    const bool written = ext == "stl" ? OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary)
+                                      : write_double_precision(mesh, ext, temporary);
+    if (!written) throw Error("writing " + path + " failed", "check that the folder exists, is writable and has space");
   });
 }
 

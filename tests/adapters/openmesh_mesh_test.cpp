@@ -86,4 +86,41 @@ TEST(OpenMeshAdapter, SmoothingKeepsTheSurfaceClosedAndOnTheSphere) {
 }
 
 }  // namespace
+// The first n vertex positions of a binary PLY whose vertices are double x y z nx ny nz.
+Points<3> double_ply_vertices(const std::string& file, std::size_t n) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && line != "end_header") {
+  }
+  Points<3> points(n);
+  for (auto& p : points) {
+    double v[6];
+    in.read(reinterpret_cast<char*>(v), sizeof(v));
+    p = Vec<3>(v[0], v[1], v[2]);
+  }
+  return points;
+}
+
+TEST(OpenMeshAdapter, AGeoreferencedOffsetSurvivesTheFileRoundTrip) {
+  // A unit sphere at 1e6 (a scan in metres, georeferenced): floats would step by 0.06 there.
+  TempDir dir;
+  LevelSetMesh<3> surface = sphere().surface;
+  for (auto& v : surface.vertices) v += Vec<3>(1e6, -2e6, 3e5);
+  const TriMesh mesh = to_openmesh(surface, sphere().normals);
+  for (const char* ext : {"ply", "obj", "off"}) {
+    const std::string file = (dir.path / (std::string("far.") + ext)).string();
+    write_mesh_file(mesh, file);
+    const Points<3> back = std::string(ext) == "ply" ? double_ply_vertices(file, surface.vertices.size())
+                                                     : read_mesh_file_vertices(file);
+    ASSERT_EQ(back.size(), surface.vertices.size()) << ext;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < back.size(); ++i) worst = std::max(worst, (back[i] - surface.vertices[i]).norm());
+    EXPECT_LT(worst, 1e-6) << ext;  // 1e-12 of the coordinates
+    // And OpenMesh still reads the file as a closed mesh.
+    TriMesh read;
+    ASSERT_TRUE(OpenMesh::IO::read_mesh(read, file)) << ext;
+    EXPECT_EQ(read.n_faces(), mesh.n_faces()) << ext;
+  }
+}
+
 }  // namespace lsr::adapters

@@ -14,18 +14,28 @@
 
 namespace lsr::adapters {
 
-/// @brief OpenMesh's default triangle mesh (float points, vertex normals requested).
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+/// @brief Double-precision points and normals: a float mesh lost the geometry of a scan at
+/// 1e6 m (georeferenced coordinates) to 0.06 m steps.
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+};
+
+/// @brief The triangle mesh of the adapters; vertex normals are present when to_openmesh was
+/// given some (has_vertex_normals()).
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 
 /// @brief The surface with its per-vertex normals (none when normals is empty); face
 /// orientation is kept.
+/// @throw lsr::Error if OpenMesh refuses a face (a non-manifold surface).
 TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals);
 
 /// @brief Vertices and triangles of an OpenMesh mesh.
 LevelSetMesh<3> from_openmesh(const TriMesh& mesh);
 
-/// @brief Writes PLY (binary), OBJ, OFF or STL by the file's extension, with vertex normals
-/// where the format holds them, atomically (an existing file survives a failure).
+/// @brief Writes PLY (binary, double), OBJ, OFF or STL by the file's extension, with vertex
+/// normals where the format holds them, 17 significant digits in text, atomically (an existing
+/// file survives a failure). STL holds floats only.
 /// @throw lsr::Error naming the path and the supported extensions.
 void write_mesh_file(const TriMesh& mesh, const std::string& path);
 
