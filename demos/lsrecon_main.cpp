@@ -40,9 +40,10 @@ const char* kUsage = R"(usage: lsrecon INPUT OUTPUT [options]
 Reconstructs a closed surface (3D) or closed curves (2D) from unoriented points with the
 level-set method of Claisse & Frey (2011). No normals needed.
 
-INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] per line), .obj .off .stl (vertices),
-        .pgm .png (2D: every dark pixel is a point)
-OUTPUT  3D: .ply .obj .off .stl     2D: .svg (drawing) or .txt (one closed polyline per loop)
+INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] or x,y,z per line), .obj .off .stl (vertices),
+        .pgm .ppm .pbm .png (2D: every dark pixel is a point)
+OUTPUT  3D: .ply .obj .off (double precision) .stl .vtk (float)
+        2D: .svg (drawing) or .txt (one closed polyline per loop)
 SHAPE   generated clouds: i.i.d. random samples of sphere torus double-torus triple-torus
         trefoil linked-rings cup limb two-spheres (3D); star three-shapes (2D)
 
@@ -463,7 +464,7 @@ int run(const Cli& c) {
   }
   if (in.dim == 3 && is_curve_output(out_ext)) {
     throw lsr::InvalidInput("the input is 3D, so the result is a surface",
-                            "write .ply, .obj, .off or .stl, or pass --dim 2 to use x and y only");
+                            "write " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output) + ", or pass --dim 2 to use x and y only");
   }
   if (!c.quiet) {
     std::fprintf(stderr, "[read ] %zu points (%zu skipped: NaN / infinite), %dD, %.2f s\n", in.points.size(),

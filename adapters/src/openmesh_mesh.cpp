@@ -2,6 +2,7 @@
 /// @file openmesh_mesh.cpp
 #include "lsrecon/adapters/openmesh_mesh.h"
 
+#include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "double_mesh_writer.h"
 
@@ -9,6 +10,8 @@
 #include "lsrecon/core/errors.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <pcl/conversions.h>
+#include <pcl/io/vtk_io.h>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
@@ -56,14 +59,32 @@ LevelSetMesh<3> from_openmesh(const TriMesh& mesh) {
   return out;
 }
 
+namespace {
+
+// pcl::PolygonMesh (float, as PCL's own tools write VTK), vertex normals if the mesh has them.
+pcl::PolygonMesh to_polygon_mesh(const TriMesh& mesh) {
+  const LevelSetMesh<3> m = from_openmesh(mesh);
+  Points<3> normals(m.vertices.size(), Vec<3>::Zero());
+  if (mesh.has_vertex_normals()) {
+    for (const auto& v : mesh.vertices()) normals[std::size_t(v.idx())] = Vec<3>(mesh.normal(v)[0], mesh.normal(v)[1], mesh.normal(v)[2]);
+  }
+  pcl::PolygonMesh out;
+  pcl::toPCLPointCloud2(normal_cloud<3>(m.vertices, normals), out.cloud);
+  out.polygons = polygons_from_triangles(m.facets);
+  return out;
+}
+
+}  // namespace
+
 void write_mesh_file(const TriMesh& mesh, const std::string& path) {
   const std::string ext = file_extension(path);
   if (!has_role(ext, FileRole::mesh_output)) {
     throw Error("cannot write a mesh to '" + path + "'", "use an output ending in " + extensions(FileRole::mesh_output));
   }
   write_file_atomically(path, [&](const std::string& temporary) {
-    const bool written = ext == "stl" ? OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary)
-                                      : write_double_precision(mesh, ext, temporary);
+    const bool written = ext == "stl"   ? OpenMesh::IO::write_mesh(mesh, temporary, OpenMesh::IO::Options::Binary)
+                         : ext == "vtk" ? pcl::io::saveVTKFile(temporary, to_polygon_mesh(mesh), 9) == 0
+                                        : write_double_precision(mesh, ext, temporary);
     if (!written) throw Error("writing " + path + " failed", "check that the folder exists, is writable and has space");
   });
 }

@@ -42,7 +42,8 @@ const std::vector<Format>& formats() {
       {"pts", {R::point_input}}, {"pcd", {R::point_input}}, {"ply", {R::point_input, R::mesh_output}},
       {"obj", {R::point_input, R::mesh_output}}, {"off", {R::point_input, R::mesh_output}},
       {"stl", {R::point_input, R::mesh_output}}, {"pgm", {R::image_input}}, {"ppm", {R::image_input}},
-      {"pbm", {R::image_input}}, {"pnm", {R::image_input}}, {"png", {R::image_input}}, {"svg", {R::curve_output}}};
+      {"pbm", {R::image_input}}, {"pnm", {R::image_input}}, {"png", {R::image_input}}, {"svg", {R::curve_output}},
+      {"vtk", {R::mesh_output}}};
   return table;
 }
 

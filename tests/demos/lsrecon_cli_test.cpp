@@ -3,10 +3,12 @@
 /// @brief The lsrecon command line as a user runs it: every input and output format, the JSON
 /// report, and every documented error path (exit code and message).
 #include "cli_fixture.h"
+#include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/vtk_lib_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
@@ -83,6 +85,19 @@ TEST_F(Cli, WritesEveryMeshFormatAndTheReport) {
   std::ifstream odd_in(odd);
   const nlohmann::json o = nlohmann::json::parse(odd_in);
   EXPECT_EQ(o["output"].get<std::string>(), path("s.ply"));
+}
+
+TEST_F(Cli, WritesVtkAsPclDoes) {
+  const CliRun r = run("--demo torus --points 5000 --resolution 32 --quiet " + path("t.vtk"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  pcl::PolygonMesh mesh;
+  ASSERT_GT(pcl::io::loadPolygonFileVTK(path("t.vtk"), mesh), 0);
+  lsr::Points<3> vertices;
+  std::vector<std::array<lsr::Index, 3>> triangles;
+  lsr::adapters::triangles_from_polygon_mesh(mesh, vertices, triangles);
+  const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
+  EXPECT_TRUE(t.watertight);
+  EXPECT_EQ(t.genus, std::vector<int>{1});
 }
 
 TEST_F(Cli, DecimatesToTheRequestedFaceCount) {

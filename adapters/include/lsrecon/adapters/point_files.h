@@ -29,7 +29,7 @@ int detect_dimension(const Points<3>& points);
 enum class FileRole {
   point_input,   ///< xyz txt xy pts pcd ply obj off stl
   image_input,   ///< pgm ppm pbm pnm png (2D: dark pixels)
-  mesh_output,   ///< ply obj off stl
+  mesh_output,   ///< ply obj off stl vtk
   curve_output,  ///< svg txt
 };
 
