@@ -291,4 +291,31 @@ TEST_F(BadInput, NotConvergedHintsNameTheMeasuredCause) {
   EXPECT_NE(r.output.find("an .svg or .txt output"), std::string::npos) << r.output;
 }
 
+// Rows whose answer is a documented result rather than an error (README, "Bad input and limits").
+TEST_F(BadInput, DegenerateButReadableInputsGiveTheDocumentedResult) {
+  // Denormal coordinates: coincide at double precision once mapped to the unit box.
+  std::ofstream(path("denormal.xyz")) << "1e-320 0 0\n0 1e-320 0\n0 0 1e-320\n0 0 0\n2e-320 2e-320 2e-320\n";
+  expect_refused(path("denormal.xyz"), "coincide");
+  // Images: all white has no point; all black is one block, whose outline is one closed curve.
+  for (const auto& [name, value] : {std::pair<std::string, int>{"white.pgm", 255}, {"black.pgm", 0}}) {
+    std::ofstream pgm(path(name), std::ios::binary);
+    pgm << "P5\n48 48\n255\n" << std::string(48 * 48, char(value));
+  }
+  expect_refused(path("white.pgm"), "no dark pixel");
+  CliRun r = run(path("black.pgm") + " " + path("black.txt") + " --quiet");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(read("black.txt").find("1 loops"), std::string::npos) << read("black.txt").substr(0, 200);
+  // Uniform random points in a cube are no surface: a closed result in seconds, reported as not
+  // converged, never a hang.
+  std::ofstream cube(path("cube.xyz"));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 3000; ++i) cube << unit(rng) << ' ' << unit(rng) << ' ' << unit(rng) << '\n';
+  cube.close();
+  r = run(path("cube.xyz") + " " + path("cube.ply") + " --quiet");
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("NOT converged"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("noisy or fill a volume"), std::string::npos) << r.output;
+}
+
 }  // namespace
