@@ -5,6 +5,7 @@
 /// its peak memory is its own. Prints figures; asserts nothing about speed.
 ///   lsrecon-bench-solver            all cases
 ///   lsrecon-bench-solver CASE       one case (0-based)
+#include "command_line.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "stopwatch.h"
@@ -102,13 +103,14 @@ void run_case(const Case& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1) {
-    const int k = std::atoi(argv[1]);
-    if (k < 0 || k >= int(cases().size())) {
-      std::fprintf(stderr, "case must be 0..%zu\n", cases().size() - 1);
-      return 2;
-    }
-    run_case(cases()[k]);
+  int only = -1;
+  lsr::demos::CommandLine line("lsrecon-bench-solver", LSRECON_VERSION,
+                               "usage: lsrecon-bench-solver [--case K]\n\n"
+                               "The solver on each case, each in its own process (peak memory per case).\n");
+  line.group("cases").number("case", "K", only, 0, double(cases().size() - 1), "run only case K, in this process");
+  line.parse(argc, argv, 0, 0, "no positional argument");
+  if (only >= 0) {
+    run_case(cases()[std::size_t(only)]);
     return 0;
   }
   std::printf("%-16s %7s %5s %9s %9s %5s %4s %6s %7s %7s %7s %7s %7s %7s %7s %7s %7s %6s\n", "case", "points", "R",
@@ -118,7 +120,7 @@ int main(int argc, char** argv) {
   for (std::size_t k = 0; k < cases().size(); ++k) {
     const pid_t child = fork();
     if (child == 0) {
-      execl(argv[0], argv[0], std::to_string(k).c_str(), static_cast<char*>(nullptr));
+      execl(argv[0], argv[0], "--case", std::to_string(k).c_str(), static_cast<char*>(nullptr));
       std::_Exit(127);
     }
     int status = 0;

@@ -5,12 +5,13 @@
 /// truth, normal consistency and topology. Writes results.md, results.csv, every mesh as PLY
 /// and, per case, lsrecon's convergence history.
 ///
-///   lsrecon-compare [--out DIR] [--cases a,b,.. | --input FILE] [--methods a,b,..]
-///                   [--points N] [--noise S] [--holes N] [--density-ratio R]
-/// --input compares on a user's cloud: time, memory and topology only (no ground truth).
+///   lsrecon-compare [--out DIR] [--cases a,b,.. | --input FILE] [--methods a,b,..] [...]
+/// (lsrecon-compare --help lists the options.) --input compares on a user's cloud: time, memory
+/// and topology only (no ground truth).
 ///
 /// Each (case, method) runs in a child process (this program re-run with --run) so that its
 /// peak memory is its own.
+#include "command_line.h"
 #include "compare_cases.h"
 #include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/adapters/pcl_mesh.h"
@@ -47,6 +48,9 @@ namespace {
 
 using Cloud = pcl::PointCloud<pcl::PointNormal>;
 
+const std::vector<std::string> kMethods = {"lsrecon", "poisson8", "poisson9", "poisson8-lsrecon", "poisson8-true",
+                                          "mc-hoppe", "mc-rbf", "gp3"};
+
 struct Settings {
   std::string out = "compare-out";
   std::string input;  ///< a user's cloud instead of the generated cases: no ground truth
@@ -63,6 +67,12 @@ std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');) out.push_back(item);
+  return out;
+}
+
+std::string join(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : separator) + item;
   return out;
 }
 
@@ -328,12 +338,13 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
 }
 
 std::string child_row(const char* self, const Settings& s, const std::string& case_name, const std::string& method) {
-  std::string command = std::string(self) + " --run " + case_name + " " + method + " --out '" + s.out + "'" +
-                        (s.input.empty() ? "" : " --input '" + s.input + "'") + " --points " +
-                        std::to_string(s.points) + " --noise " + std::to_string(s.variant.noise) + " --holes " +
-                        std::to_string(s.variant.holes) + " --density-ratio " + std::to_string(s.variant.density_ratio) +
-                        " --hole-radius " + std::to_string(s.hole_radius) + " 2>/dev/null";
-  FILE* pipe = popen(command.c_str(), "r");
+  std::ostringstream command;
+  command.precision(17);
+  command << self << " --run " << case_name << '/' << method << " --out '" << s.out << "'"
+          << (s.input.empty() ? "" : " --input '" + s.input + "'") << " --points " << s.points << " --noise "
+          << s.variant.noise << " --holes " << s.variant.holes << " --density-ratio " << s.variant.density_ratio
+          << " --hole-radius " << s.hole_radius << " 2>/dev/null";
+  FILE* pipe = popen(command.str().c_str(), "r");
   std::string row;
   char buffer[4096];
   while (pipe && std::fgets(buffer, sizeof buffer, pipe)) row = buffer;
@@ -395,48 +406,52 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
      << "that need normals (PCA of 16 neighbours, oriented away from the centroid).\n";
 }
 
+// Every option once; the defaults are Settings'.
+Settings parse(int argc, char** argv, std::string& run_case, std::string& run_method) {
+  Settings s;
+  std::string cases = "all", methods = join(s.methods, ","), run;
+  lsr::demos::CommandLine line(
+      "lsrecon-compare", LSRECON_VERSION,
+      "usage: lsrecon-compare [options]\n\n"
+      "lsrecon against PCL's reconstructors on the same clouds: time, peak memory, distances to the\n"
+      "exact surface, normal consistency and topology. Writes DIR/results.md, results.csv and every mesh.\n"
+      "Each (case, method) runs in its own process, so that its peak memory is its own.\n");
+  line.group("what to compare")
+      .text("cases", "A,B,..", cases, "generated clouds (all, or some of: " + join(lsr::demos::case_names(), " ") + ")")
+      .text("input", "FILE", s.input, "a cloud of yours instead: time, memory and topology only (no ground truth)")
+      .text("methods", "A,B,..", methods, "reconstructors, some of: " + join(kMethods, " "))
+      .text("out", "DIR", s.out, "where results and meshes go");
+  line.group("generated clouds (i.i.d. area-uniform random samples)")
+      .number("points", "N", s.points, 4, 5e7, "points per cloud")
+      .number("noise", "S", s.variant.noise, 0, 0.5, "Gaussian noise, times the diagonal")
+      .number("holes", "N", s.variant.holes, 0, 100, "unsampled caps")
+      .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x");
+  line.group("lsrecon").number("hole-radius", "H", s.hole_radius, 0, 0.49, "lsrecon's --hole-radius");
+  line.group("internal").text("run", "CASE/METHOD", run, "run one case in this process (the parent run does)");
+  line.parse(argc, argv, 0, 0, "no positional argument");
+  if (cases != "all") s.cases = split(cases);
+  s.methods = split(methods);
+  for (const auto& m : s.methods) {
+    if (std::find(kMethods.begin(), kMethods.end(), m) == kMethods.end()) line.fail("unknown method '" + m + "'");
+  }
+  const auto known = lsr::demos::case_names();
+  for (const auto& c : s.cases) {
+    if (std::find(known.begin(), known.end(), c) == known.end() && c != "file") line.fail("unknown case '" + c + "'");
+  }
+  if (!run.empty()) {
+    const std::size_t slash = run.find('/');
+    if (slash == std::string::npos) line.fail("--run expects CASE/METHOD, got '" + run + "'");
+    run_case = run.substr(0, slash);
+    run_method = run.substr(slash + 1);
+  }
+  return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  Settings s;
   std::string run_case, run_method_name;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "lsrecon-compare: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--run") {
-      run_case = value();
-      run_method_name = value();
-    } else if (a == "--out") {
-      s.out = value();
-    } else if (a == "--input") {
-      s.input = value();
-    } else if (a == "--cases") {
-      s.cases = split(value());
-    } else if (a == "--methods") {
-      s.methods = split(value());
-    } else if (a == "--points") {
-      s.points = std::atoi(value().c_str());
-    } else if (a == "--noise") {
-      s.variant.noise = std::atof(value().c_str());
-    } else if (a == "--holes") {
-      s.variant.holes = std::atoi(value().c_str());
-    } else if (a == "--hole-radius") {
-      s.hole_radius = std::atof(value().c_str());
-    } else if (a == "--density-ratio") {
-      s.variant.density_ratio = std::atof(value().c_str());
-    } else {
-      std::fprintf(stderr, "usage: lsrecon-compare [--out DIR] [--cases a,b | --input FILE] [--methods a,b] [--points N] "
-                           "[--noise S] [--holes N] [--density-ratio R] [--hole-radius H (lsrecon's)]\n  cases: sphere torus double-torus triple-torus trefoil linked-rings cup limb two-spheres\n"
-                           "  methods: lsrecon poisson8 poisson9 poisson8-lsrecon poisson8-true mc-hoppe mc-rbf gp3\n");
-      return a == "--help" ? 0 : 2;
-    }
-  }
+  Settings s = parse(argc, argv, run_case, run_method_name);
   try {
     if (!run_case.empty()) return run_one(s, run_case, run_method_name);
     std::filesystem::create_directories(s.out);

@@ -3,6 +3,7 @@
 /// @brief The lsrecon command line: a point cloud file (or a generated demo cloud) in, a closed
 /// surface (3D) or closed curves (2D) out. Progress and timings on stderr, an optional JSON
 /// report, outputs written atomically, non-zero exit with a message that says what to change.
+#include "command_line.h"
 #include "curve_files.h"
 #include "image_points.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
@@ -47,43 +48,11 @@ OUTPUT  3D: .ply .obj .off (double precision) .stl .vtk (float)
 SHAPE   generated clouds: i.i.d. random samples of sphere torus double-torus triple-torus
         trefoil linked-rings cup limb two-spheres (3D); star three-shapes (2D)
 
-options (lengths are in the unit box the data is mapped into: its bounding ball has radius 0.4)
-  --resolution R                1/h_min, same mesh size everywhere near the data;
-                                0 = follow the local sampling spacing             (default 0)
-  --max-resolution R            cap on the local resolution (finer = more time,
-                                memory, and closer sheets told apart);
-                                0 = 256 in 3D, 4096 in 2D                         (default 0)
-  --max-size H                  coarsest mesh size                                (default 0.125)
-  --grading C                   mesh grading; smaller = wider fine band           (default 2)
-  --alpha A                     attraction; 0 = +2 (enclose), -2 (inside)         (default 0)
-  --curvature-weight B          smoothness; < 0 = local, from spacing and noise   (default -1)
-  --time-step DT                0 = 0.2/|alpha|                                   (default 0)
-  --max-iterations N            time steps at most                                (default 1000)
-  --tolerance EPS               stop when data and front are this close;
-                                0 = one local sampling spacing                    (default 0)
-  --hole-radius H               experimental: span sampling holes up to H          (default 0)
-  --no-fit                      output the front itself, not the fit through the data
-  --keep-outliers               keep isolated points (nearest neighbour farther than
-                                3 local spacings); by default they are left out
-  --renormalization-interval K  0 = automatic                                     (default 0)
-  --init tagged|enclose|inside  start hugging the data from outside (flood from the
-                                box walls), on a sphere around it or inside it    (default tagged)
-  --dim 2|3                     force the dimension; else 2 for planar input      (default auto)
-  --decimate FACES              simplify the 3D result to at most FACES faces     (default off)
-  --smooth N                    N rounds of Laplace smoothing of the 3D result    (default 0)
-  --threads N                   0 = all cores                                     (default 0)
-  --max-memory GIB              refuse clouds and meshes predicted to need more;
-                                0 = min(4, half the machine's memory)             (default 0)
-  --max-mesh-vertices N         refuse larger meshes; 0 = from --max-memory       (default 0)
-  --points N                    points of a --demo cloud                          (default 20000)
-  --report FILE.json            write figures of the run as JSON
-  --save-points FILE.xyz        also write the input points (a --demo cloud) as text
-  --quiet                       no progress on stderr
-  --help, -h                    this text
-  --version                     the version
-  Options take their value as --opt VALUE or --opt=VALUE.
+Options take their value as --opt VALUE or --opt=VALUE; (=X) is the default. Lengths are in the
+unit box the data is mapped into (its bounding ball has radius 0.4); 0 means "from the data".
+)";
 
-exit status: 0 written (see the summary for convergence), 1 bad input or file error,
+const char* kExitStatus = R"(exit status: 0 written (see the summary for convergence), 1 bad input or file error,
              2 bad command line, 130 interrupted (nothing written)
 )";
 
@@ -100,150 +69,94 @@ struct Cli {
   bool quiet = false;
 };
 
-[[noreturn]] void usage_error(const std::string& message) {
-  std::cerr << "lsrecon: " << message << "\n(run lsrecon --help for the usage)\n";
-  std::exit(2);
-}
-
-double number(const std::string& flag, const char* text, double lo, double hi) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !(v >= lo && v <= hi)) {
-    std::ostringstream range;
-    range << lo << " and " << hi;
-    usage_error(flag + " expects a number between " + range.str() + ", got '" + text + "'");
-  }
-  return v;
-}
-
-double integer(const std::string& flag, const char* text, double lo, double hi) {
-  const double v = number(flag, text, lo, hi);
-  if (v != std::floor(v)) usage_error(flag + " expects a whole number, got '" + text + "'");
-  return v;
-}
-
 bool is_2d_shape(const std::string& s) { return s == "star" || s == "three-shapes"; }
 bool is_curve_output(const std::string& ext) { return lsr::adapters::has_role(ext, lsr::adapters::FileRole::curve_output); }
 bool is_mesh_output(const std::string& ext) { return lsr::adapters::has_role(ext, lsr::adapters::FileRole::mesh_output); }
 
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+const char* initial_front_name(lsr::InitialFront f) {
+  return f == lsr::InitialFront::tagged ? "tagged" : f == lsr::InitialFront::enclosing ? "enclose" : "inside";
+}
+
+// Every option once: its default is the value Cli (and so lsr::ReconstructionOptions) starts with.
 Cli parse(int argc, char** argv) {
   Cli c;
-  std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    // --opt=value as well as --opt value
-    std::string inline_value;
-    const std::size_t eq = a.find('=');
-    const bool has_inline = a.rfind("--", 0) == 0 && eq != std::string::npos;
-    if (has_inline) {
-      inline_value = a.substr(eq + 1);
-      a.resize(eq);
-    }
-    if (a == "--help" || a == "-h") {
-      std::cout << kUsage;
-      std::exit(0);
-    }
-    if (a == "--version") {
-      std::cout << "lsrecon " << LSRECON_VERSION << '\n';
-      std::exit(0);
-    }
-    if (has_inline && (a == "--quiet" || a == "--no-fit" || a == "--keep-outliers")) usage_error(a + " takes no value");
-    if (a == "--quiet") {
-      c.quiet = true;
-      continue;
-    }
-    if (a == "--no-fit") {
-      c.solver.fit_surface = false;
-      continue;
-    }
-    if (a == "--keep-outliers") {
-      c.solver.outlier_factor = 0.0;
-      continue;
-    }
-    if (a.rfind("--", 0) != 0) {
-      positional.push_back(a);
-      continue;
-    }
-    if (!has_inline && i + 1 >= argc) usage_error("option " + a + " needs a value");
-    const char* v = has_inline ? inline_value.c_str() : argv[++i];
-    auto& s = c.solver;
-    if (a == "--demo") {
-      c.demo = v;
-    } else if (a == "--resolution") {
-      const double r = number(a, v, 0, 1e5);
-      if (r > 0 && r < 4) usage_error("--resolution must be 0 (automatic) or at least 4");
-      s.h_min = r > 0 ? 1.0 / r : 0.0;
-    } else if (a == "--max-resolution") {
-      const double r = number(a, v, 0, 1e5);
-      if (r > 0 && r < 4) usage_error("--max-resolution must be 0 (automatic) or at least 4");
-      s.max_resolution = r;
-    } else if (a == "--max-size") {
-      s.h_max = number(a, v, 1e-4, 1);
-    } else if (a == "--grading") {
-      s.grading = number(a, v, 1e-3, 100);
-    } else if (a == "--alpha") {
-      s.alpha = number(a, v, -1e3, 1e3);
-    } else if (a == "--curvature-weight") {
-      s.curvature_weight = number(a, v, -1, 1e3);
-    } else if (a == "--time-step") {
-      s.time_step = number(a, v, 0, 100);
-    } else if (a == "--max-iterations") {
-      s.max_iterations = int(integer(a, v, 1, 1e7));
-    } else if (a == "--tolerance") {
-      s.tolerance = number(a, v, 0, 0.5);
-    } else if (a == "--hole-radius") {
-      s.hole_radius = number(a, v, 0, 0.49);
-    } else if (a == "--renormalization-interval") {
-      s.renormalization_interval = int(integer(a, v, 0, 1000));
-    } else if (a == "--init") {
-      const std::string init = v;
-      if (init != "tagged" && init != "enclose" && init != "inside") {
-        usage_error("--init must be tagged, enclose or inside, got '" + init + "'");
-      }
-      s.initial_front = init == "inside"    ? lsr::InitialFront::inside
-                        : init == "enclose" ? lsr::InitialFront::enclosing
-                                            : lsr::InitialFront::tagged;
-    } else if (a == "--dim") {
-      c.dim = int(integer(a, v, 2, 3));
-    } else if (a == "--decimate") {
-      c.decimate = long(integer(a, v, 4, 1e9));
-    } else if (a == "--smooth") {
-      c.smooth = unsigned(integer(a, v, 0, 1000));
-    } else if (a == "--threads") {
-      s.threads = int(integer(a, v, 0, 1024));
-    } else if (a == "--max-mesh-vertices") {
-      s.max_vertices = lsr::Index(integer(a, v, 0, 2e9));
-    } else if (a == "--max-memory") {
-      s.max_memory = number(a, v, 0, 1e5) * double(1 << 30);
-    } else if (a == "--points") {
-      c.points = int(integer(a, v, 4, 5e7));
-    } else if (a == "--report") {
-      c.report = v;
-    } else if (a == "--save-points") {
-      c.save_points = v;
-    } else {
-      usage_error("unknown option " + a);
-    }
-  }
+  auto& s = c.solver;
+  lsr::demos::CommandLine line("lsrecon", LSRECON_VERSION, kUsage, kExitStatus);
+  std::string init = initial_front_name(s.initial_front);
+  bool no_fit = false, keep_outliers = false;
+  auto resolution = [&line](const std::string& flag, double r) {
+    if (r > 0 && r < 4) line.fail(flag + " must be 0 (automatic) or at least 4");
+    return r;
+  };
+  line.group("input and output")
+      .text("demo", "SHAPE", c.demo, "reconstruct a generated cloud (SHAPE above) instead of INPUT")
+      .number("points", "N", c.points, 4, 5e7, "points of a --demo cloud")
+      .number("dim", "D", c.dim, 2, 3, "2 or 3; 0 = 2 if the input is planar, else 3")
+      .text("report", "FILE.json", c.report, "write the figures of the run as JSON")
+      .text("save-points", "FILE.xyz", c.save_points, "also write the input points (a --demo cloud) as text")
+      .flag("quiet", c.quiet, "no progress on stderr");
+  line.group("mesh")
+      .number("resolution", "R", s.h_min > 0 ? 1 / s.h_min : 0.0, 0, 1e5, false,
+              "1/h_min, the same mesh size everywhere near the data; 0 = follow the local sampling spacing",
+              [&](double r) { s.h_min = resolution("--resolution", r) > 0 ? 1.0 / r : 0.0; })
+      .number("max-resolution", "R", s.max_resolution, 0, 1e5, false,
+              "cap on the local resolution (finer = more time and memory, closer sheets told apart); "
+              "0 = 256 in 3D, 4096 in 2D",
+              [&](double r) { s.max_resolution = resolution("--max-resolution", r); })
+      .number("max-size", "H", s.h_max, 1e-4, 1, "coarsest mesh size")
+      .number("grading", "C", s.grading, 1e-3, 100, "mesh grading; smaller = wider fine band");
+  line.group("front")
+      .text("init", "START", init, "tagged: hug the data from outside (flood from the box walls); "
+            "enclose: a sphere around it; inside: a sphere inside it", {"tagged", "enclose", "inside"})
+      .number("alpha", "A", s.alpha, -1e3, 1e3, "attraction to the data; 0 = +2 (from outside), -2 (inside)")
+      .number("curvature-weight", "B", s.curvature_weight, -1, 1e3, "smoothness; < 0 = local, from spacing and noise")
+      .number("time-step", "DT", s.time_step, 0, 100, "0 = 0.2 / |alpha|")
+      .number("max-iterations", "N", s.max_iterations, 1, 1e7, "time steps at most")
+      .number("tolerance", "EPS", s.tolerance, 0, 0.5, "stop when data and front are this close; 0 = one local sampling spacing")
+      .number("renormalization-interval", "K", s.renormalization_interval, 0, 1000, "renormalise every K steps; 0 = automatic")
+      .number("hole-radius", "H", s.hole_radius, 0, 0.49, "experimental: span sampling holes up to H");
+  line.group("data and result")
+      .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
+            format_number(s.outlier_factor) + " local spacings); by default they are left out")
+      .flag("no-fit", no_fit, "output the front itself, not the fit through the data")
+      .number("decimate", "FACES", c.decimate, 4, 1e9, "simplify the 3D result to at most FACES faces; 0 = off")
+      .number("smooth", "N", c.smooth, 0, 1000, "N rounds of Laplace smoothing of the 3D result");
+  line.group("resources")
+      .number("threads", "N", s.threads, 0, 1024, "0 = all cores")
+      .number("max-memory", "GIB", s.max_memory / double(1 << 30), 0, 1e5, false,
+              "refuse clouds and meshes predicted to need more; 0 = min(4, half the machine's memory)",
+              [&](double gib) { s.max_memory = gib * double(1 << 30); })
+      .number("max-mesh-vertices", "N", s.max_vertices, 0, 2e9, "refuse larger meshes; 0 = from --max-memory");
+  const std::vector<std::string> positional = line.parse(argc, argv, 1, 2, "INPUT OUTPUT (or --demo SHAPE OUTPUT)");
+  if (no_fit) s.fit_surface = false;
+  if (keep_outliers) s.outlier_factor = 0.0;
+  s.initial_front = init == "inside" ? lsr::InitialFront::inside
+                    : init == "enclose" ? lsr::InitialFront::enclosing
+                                        : lsr::InitialFront::tagged;
   const std::size_t expected = c.demo.empty() ? 2 : 1;
   if (positional.size() != expected) {
-    usage_error(c.demo.empty() ? "expected INPUT and OUTPUT" : "with --demo, expected only OUTPUT");
+    line.fail(c.demo.empty() ? "expected INPUT and OUTPUT" : "with --demo, expected only OUTPUT");
   }
   if (c.demo.empty()) c.input = positional[0];
   c.output = positional.back();
   const auto shapes = lsr::test_shape_names();
   if (!c.demo.empty() && std::find(shapes.begin(), shapes.end(), c.demo) == shapes.end() && !is_2d_shape(c.demo)) {
-    usage_error("--demo must be one of the SHAPE names in --help, got '" + c.demo + "'");
+    line.fail("--demo must be one of the SHAPE names in --help, got '" + c.demo + "'");
   }
   const std::string out = lsr::adapters::file_extension(c.output);
   if (!is_curve_output(out) && !is_mesh_output(out)) {
-    usage_error("cannot write '" + c.output + "': use " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output) +
-                " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
+    line.fail("cannot write '" + c.output + "': use " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output) +
+              " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
   }
-  if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) usage_error("--decimate and --smooth apply to 3D meshes only");
+  if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) line.fail("--decimate and --smooth apply to 3D meshes only");
   return c;
 }
-
 
 // The input as 3D points and its dimension.
 struct Input {
@@ -331,9 +244,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"fit_surface", o.fit_surface},
                         {"outlier_factor", o.outlier_factor},
                         {"renormalization_interval", o.renormalization_interval},
-                        {"initial_front", o.initial_front == lsr::InitialFront::tagged      ? "tagged"
-                                          : o.initial_front == lsr::InitialFront::enclosing ? "enclose"
-                                                                                             : "inside"},
+                        {"initial_front", initial_front_name(o.initial_front)},
                         {"max_memory_bytes", o.max_memory},
                         {"max_mesh_vertices", o.max_vertices},
                         {"threads", o.threads}};
@@ -401,14 +312,14 @@ std::string not_converged_hint(const lsr::ReconstructionResult<D>& r) {
 }
 
 template <int D>
-void summarize(const lsr::ReconstructionResult<D>& r, bool quiet) {
+void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, bool quiet) {
   if (!quiet) {
     std::fputc('\n', stderr);
     for (const auto& stage : r.stages) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), r.seconds.at(stage));
   }
   if (r.outlier_points > 0) {
-    std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than 3 local spacings); "
-                         "--keep-outliers keeps them\n", r.outlier_points);
+    std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than %g local spacings); "
+                         "--keep-outliers keeps them\n", r.outlier_points, outlier_factor);
   }
   if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
     std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "
@@ -475,7 +386,7 @@ int run(const Cli& c) {
     lsr::Points<2> planar;
     for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
     const auto r = lsr::reconstruct<2>(planar, c.solver, printer(c.quiet));
-    summarize(r, c.quiet);
+    summarize(r, c.solver.outlier_factor, c.quiet);
     if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
     clock.lap();
     if (out_ext == "svg") {
@@ -494,7 +405,7 @@ int run(const Cli& c) {
     return 0;
   }
   const auto r = lsr::reconstruct<3>(in.points, c.solver, printer(c.quiet));
-  summarize(r, c.quiet);
+  summarize(r, c.solver.outlier_factor, c.quiet);
   if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
   clock.lap();
   lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);

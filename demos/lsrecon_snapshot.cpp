@@ -2,10 +2,12 @@
 /// @file lsrecon_snapshot.cpp
 /// @brief Renders meshes (.ply, .vtu) to a PNG, offscreen (run under xvfb-run), one viewport
 /// per input with its name as a label:
-///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --top] [--columns N] [--size W H]
+///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --top] [--columns N] [--width W] [--height H]
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
 /// grading of an adaptive mesh); --top looks down the z axis. Flat (2D) data is seen from above.
 /// Back faces are blue: a closed surface that shows blue is oriented inwards there.
+#include "command_line.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
@@ -121,29 +123,18 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
 int main(int argc, char** argv) {
   View v;
   int columns = 0, width = 0, height = 0;
-  std::vector<std::string> inputs;
-  std::string output;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--clip") {
-      v.clip = true;
-    } else if (a == "--top") {
-      v.top = true;
-    } else if (a == "--columns" && i + 1 < argc) {
-      columns = std::atoi(argv[++i]);
-    } else if (a == "--size" && i + 2 < argc) {
-      width = std::atoi(argv[++i]);
-      height = std::atoi(argv[++i]);
-    } else if (output.empty()) {
-      output = a;
-    } else {
-      inputs.push_back(a);
-    }
-  }
-  if (output.empty() || inputs.empty()) {
-    std::fprintf(stderr, "usage: lsrecon-snapshot OUTPUT.png INPUT.{ply,vtu}... [--clip | --top] [--columns N] [--size W H]\n");
-    return 2;
-  }
+  lsr::demos::CommandLine line("lsrecon-snapshot", LSRECON_VERSION,
+                               "usage: lsrecon-snapshot OUTPUT.png INPUT.{ply,vtu}... [options]\n\n"
+                               "Renders meshes (and .vtu volume results) offscreen to one PNG, one view per input.\n");
+  line.group("view")
+      .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
+      .flag("top", v.top, "look down the z axis (flat, 2D data always is)")
+      .number("columns", "N", columns, 0, 100, "views per row; 0 = up to 4")
+      .number("width", "W", width, 0, 20000, "image width in pixels; 0 = from the number of views")
+      .number("height", "H", height, 0, 20000, "image height in pixels; 0 = from the number of views");
+  std::vector<std::string> inputs = line.parse(argc, argv, 2, 1000, "OUTPUT.png and at least one INPUT");
+  const std::string output = inputs.front();
+  inputs.erase(inputs.begin());
   for (const auto& in : inputs) {
     if (!std::ifstream(in)) {
       std::fprintf(stderr, "lsrecon-snapshot: cannot read %s\n", in.c_str());

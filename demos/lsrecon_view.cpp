@@ -6,6 +6,7 @@
 /// curves lsrecon wrote as .txt. --overlay draws the cloud over the result in one view;
 /// --screenshot renders once and saves a PNG instead of opening a window (use xvfb-run when no
 /// display is available).
+#include "command_line.h"
 #include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
@@ -59,42 +60,22 @@ pcl::PolygonMesh read_result_mesh(const std::string& path) {
   return mesh;
 }
 
-const char* const kUsage =
-    "usage: lsrecon-view CLOUD [RESULT] [--overlay] [--screenshot FILE.png]\n"
-    "  CLOUD   any point file lsrecon reads (.pcd .ply .xyz .txt .obj .off .stl)\n"
-    "  RESULT  a mesh lsrecon wrote (.ply .obj .off .stl .vtk) or its 2D curves (.txt)\n"
-    "  --overlay            the cloud over the result in one view (default: side by side)\n"
-    "  --screenshot FILE    render once to a PNG instead of opening a window (xvfb-run -a\n"
-    "                       without a display)\n";
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string cloud_path, result_path, screenshot;
+  std::string screenshot;
   bool overlay = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-    if (a == "--overlay") {
-      overlay = true;
-    } else if (a == "--screenshot" && i + 1 < argc) {
-      screenshot = argv[++i];
-    } else if (cloud_path.empty()) {
-      cloud_path = a;
-    } else if (result_path.empty()) {
-      result_path = a;
-    } else {
-      std::fprintf(stderr, "lsrecon-view: unexpected argument '%s'\n%s", a.c_str(), kUsage);
-      return 2;
-    }
-  }
-  if (cloud_path.empty()) {
-    std::fprintf(stderr, "lsrecon-view: expected CLOUD\n%s", kUsage);
-    return 2;
-  }
+  lsr::demos::CommandLine line("lsrecon-view", LSRECON_VERSION,
+                               "usage: lsrecon-view CLOUD [RESULT] [options]\n\n"
+                               "  CLOUD   any point file lsrecon reads (.pcd .ply .xyz .txt .obj .off .stl)\n"
+                               "  RESULT  a mesh lsrecon wrote (.ply .obj .off .stl .vtk) or its 2D curves (.txt)\n");
+  line.group("view")
+      .flag("overlay", overlay, "the cloud over the result in one view (default: side by side)")
+      .text("screenshot", "FILE.png", screenshot,
+            "render once to a PNG instead of opening a window (xvfb-run -a without a display)");
+  const std::vector<std::string> files = line.parse(argc, argv, 1, 2, "CLOUD [RESULT]");
+  const std::string cloud_path = files[0];
+  const std::string result_path = files.size() > 1 ? files[1] : "";
   try {
     pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
     for (const auto& p : lsr::adapters::read_point_file(cloud_path).points) {

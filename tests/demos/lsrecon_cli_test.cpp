@@ -5,6 +5,7 @@
 #include "cli_fixture.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
+#include "lsrecon/core/level_set_reconstruction.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -162,6 +163,33 @@ TEST_F(Cli, CommandLineErrorsExitWithTwoAndSayWhatToChange) {
   const CliRun help = run("--help");
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.output.find("--resolution"), std::string::npos);
+  // An abbreviation is refused, not guessed: --res could be --resolution or --report.
+  EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --res 64").status, 2);
+  EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --quiet=1").status, 2);
+  EXPECT_EQ(run("-h").status, 0);
+}
+
+// --help prints the defaults the library starts with, from the one options object.
+TEST_F(Cli, HelpShowsTheLibraryDefaults) {
+  const CliRun help = run("--help");
+  ASSERT_EQ(help.status, 0);
+  const lsr::ReconstructionOptions o;
+  auto shown = [&](const std::string& option, double value) {
+    std::ostringstream s;
+    s << option << " (=" << value << ")";
+    EXPECT_NE(help.output.find(s.str()), std::string::npos) << s.str() << " in\n" << help.output;
+  };
+  shown("--max-iterations N", o.max_iterations);
+  shown("--max-size H", o.h_max);
+  shown("--grading C", o.grading);
+  shown("--curvature-weight B", o.curvature_weight);
+  shown("--max-resolution R", o.max_resolution);
+  shown("--tolerance EPS", o.tolerance);
+  EXPECT_NE(help.output.find("--init START (=tagged)"), std::string::npos);
+  ASSERT_EQ(o.initial_front, lsr::InitialFront::tagged);
+  std::ostringstream outliers;
+  outliers << "farther than " << o.outlier_factor << " local";
+  EXPECT_NE(help.output.find(outliers.str()), std::string::npos);
 }
 
 TEST_F(Cli, SavesItsCloudAndAnswersVersionHelpAndInlineValues) {

@@ -33,6 +33,8 @@ namespace pcl {
 /// setters are relative to the unit box the cloud is mapped into (its bounding ball becomes a
 /// ball of radius 0.4); the output is in the cloud's coordinates. Points with NaN or infinite
 /// coordinates are skipped. On bad input the class logs PCL_ERROR and leaves the output empty.
+/// Every option starts at the default of lsr::ReconstructionOptions, which documents it; the
+/// getters return the values in use.
 /// @note setSearchMethod() is accepted for compatibility and not used: distances come from an
 /// exact FLANN index of lsrecon's own.
 template <typename PointInT>
@@ -59,59 +61,63 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
 
   LevelSetReconstruction() { this->check_tree_ = false; }
 
-  /// @brief Resolution 1/h_min in the unit box, the same everywhere near the data; 0 (default)
-  /// follows the local sampling spacing and noise. Typical: 64 to 512 in 3D.
+  /// @brief Resolution 1/h_min in the unit box, the same everywhere near the data; 0 follows the
+  /// local sampling spacing and noise (lsr::ReconstructionOptions::h_min).
   void setResolution(double resolution) { options_.h_min = resolution > 0 ? 1.0 / resolution : 0.0; }
   double getResolution() const { return options_.h_min > 0 ? 1.0 / options_.h_min : 0.0; }
-  /// @brief Cap on the local resolution (default 0: 256 in 3D, 4096 in 2D); finer costs time
-  /// and memory and tells closer sheets apart (about 2.4 / resolution).
+  /// @brief Cap on the local resolution (lsr::ReconstructionOptions::max_resolution); finer
+  /// costs time and memory and tells closer sheets apart.
   void setMaximumResolution(double resolution) { options_.max_resolution = resolution; }
   double getMaximumResolution() const { return options_.max_resolution; }
   /// @brief Isolated points, whose nearest neighbour is farther than this many local spacings,
-  /// are left out (default 3; 0 keeps every point).
+  /// are left out; 0 keeps every point (lsr::ReconstructionOptions::outlier_factor).
   void setOutlierFactor(double factor) { options_.outlier_factor = factor; }
   double getOutlierFactor() const { return options_.outlier_factor; }
-  /// @brief Coarsest mesh size in the unit box (default 1/8).
+  /// @brief Coarsest mesh size in the unit box (lsr::ReconstructionOptions::h_max).
   void setMaximumSize(double h_max) { options_.h_max = h_max; }
   double getMaximumSize() const { return options_.h_max; }
-  /// @brief Grading c of the adaptive mesh (default 2; smaller widens the fine band).
+  /// @brief Grading c of the adaptive mesh; smaller widens the fine band
+  /// (lsr::ReconstructionOptions::grading).
   void setGrading(double c) { options_.grading = c; }
   double getGrading() const { return options_.grading; }
-  /// @brief Attraction weight alpha (default 0: +2 from outside, -2 from inside).
+  /// @brief Attraction weight alpha (lsr::ReconstructionOptions::alpha).
   void setAlpha(double alpha) { options_.alpha = alpha; }
   double getAlpha() const { return options_.alpha; }
-  /// @brief Curvature (smoothness) weight beta, unit box length^2 (default -1: automatic,
-  /// from the local sampling spacing and noise; see lsr::ReconstructionOptions).
+  /// @brief Curvature (smoothness) weight beta, unit box length^2; negative: from the local
+  /// sampling spacing and noise (lsr::ReconstructionOptions::curvature_weight).
   void setCurvatureWeight(double beta) { options_.curvature_weight = beta; }
   double getCurvatureWeight() const { return options_.curvature_weight; }
-  /// @brief Time step in unit-box time (default 0: 0.2 / |alpha|).
+  /// @brief Time step in unit-box time (lsr::ReconstructionOptions::time_step).
   void setTimeStep(double dt) { options_.time_step = dt; }
   double getTimeStep() const { return options_.time_step; }
-  /// @brief Time steps at most (default 1000).
+  /// @brief Time steps at most (lsr::ReconstructionOptions::max_iterations).
   void setMaxIterations(int n) { options_.max_iterations = n; }
   int getMaxIterations() const { return options_.max_iterations; }
-  /// @brief Stopping tolerance in the unit box (default 0: half the local sampling spacing).
+  /// @brief Stopping tolerance in the unit box; 0 follows the local sampling spacing
+  /// (lsr::ReconstructionOptions::tolerance).
   void setTolerance(double eps) { options_.tolerance = eps; }
   double getTolerance() const { return options_.tolerance; }
-  /// @brief Renormalise every k steps (default 0: automatic, 2 at the default time step).
+  /// @brief Renormalise every k steps; 0: automatic
+  /// (lsr::ReconstructionOptions::renormalization_interval).
   void setRenormalizationInterval(int k) { options_.renormalization_interval = k; }
   int getRenormalizationInterval() const { return options_.renormalization_interval; }
-  /// @brief Start from the tagged front around the data (default), a sphere around it or
-  /// inside it.
+  /// @brief Start from the tagged front around the data, a sphere around it or inside it
+  /// (lsr::ReconstructionOptions::initial_front).
   void setInitialSurface(lsr::InitialFront start) { options_.initial_front = start; }
   lsr::InitialFront getInitialSurface() const { return options_.initial_front; }
-  /// @brief 2 for curves in the plane z = const, 3 for surfaces, 0 (default): 2 when every
-  /// point has the same z, else 3.
+  /// @brief 2 for curves in the plane z = const, 3 for surfaces, 0 (the default): 2 when the
+  /// cloud is planar, else 3 (lsr::adapters::detect_dimension).
   void setDimension(int dimension) { dimension_ = dimension; }
   int getDimension() const { return dimension_; }
   /// @brief Refuse (reconstruct() fails with PCL_ERROR, nothing allocated) clouds and meshes
-  /// predicted to need more bytes (default 0: min(4 GiB, half the machine's memory)).
+  /// predicted to need more bytes (lsr::ReconstructionOptions::max_memory).
   void setMaximumMemory(double bytes) { options_.max_memory = bytes; }
   double getMaximumMemory() const { return options_.max_memory; }
-  /// @brief Refuse meshes predicted to need more vertices (default 0: from the memory limit).
+  /// @brief Refuse meshes predicted to need more vertices; 0: from the memory limit
+  /// (lsr::ReconstructionOptions::max_vertices).
   void setMaxMeshVertices(int n) { options_.max_vertices = n; }
   int getMaxMeshVertices() const { return options_.max_vertices; }
-  /// @brief Threads for the distance queries (default 0: all cores).
+  /// @brief Threads; 0: all cores (lsr::ReconstructionOptions::threads).
   void setThreads(int n) { options_.threads = n; }
   int getThreads() const { return options_.threads; }
   /// @brief Called with (stage, fraction in [0, 1]); return false to cancel.
