@@ -8,6 +8,7 @@
 #include "image_points.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
+#include "lsrecon/adapters/statistical_outliers.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/atomic_file.h"
@@ -62,6 +63,7 @@ extern "C" void on_interrupt(int) { g_interrupted = true; }
 struct Cli {
   std::string input, output, demo, report, save_points;
   lsr::ReconstructionOptions solver;
+  lsr::adapters::StatisticalOutlierFilter statistical;
   int dim = 0;
   long decimate = 0;
   unsigned smooth = 0;
@@ -124,6 +126,10 @@ Cli parse(int argc, char** argv) {
   line.group("data and result")
       .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
             format_number(s.outlier_factor) + " local spacings); by default they are left out")
+      .number("sor-mean-k", "K", c.statistical.mean_k, 0, 1000,
+              "pcl::StatisticalOutlierRemoval first: K neighbours (e.g. 16) for clusters of outliers; 0 = off")
+      .number("sor-stddev", "S", c.statistical.stddev_mul, 1e-3, 1e3,
+              "... leaving out points whose mean neighbour distance is S deviations above the mean")
       .flag("no-fit", no_fit, "output the front itself, not the fit through the data")
       .number("decimate", "FACES", c.decimate, 4, 1e9, "simplify the 3D result to at most FACES faces; 0 = off")
       .number("smooth", "N", c.smooth, 0, 1000, "N rounds of Laplace smoothing of the 3D result");
@@ -163,6 +169,7 @@ struct Input {
   lsr::Points<3> points;
   int dim = 3;
   std::size_t skipped = 0;
+  std::size_t statistical_outliers = 0;  ///< left out by pcl::StatisticalOutlierRemoval
 };
 
 Input generate(const Cli& c) {
@@ -247,7 +254,9 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"initial_front", initial_front_name(o.initial_front)},
                         {"max_memory_bytes", o.max_memory},
                         {"max_mesh_vertices", o.max_vertices},
-                        {"threads", o.threads}};
+                        {"threads", o.threads},
+                        {"sor_mean_k", c.statistical.mean_k},
+                        {"sor_stddev", c.statistical.stddev_mul}};
   // Stage times in pipeline order: read, the solver's stages, then what follows them.
   json stages = json::array();
   stages.push_back({{"stage", "read"}, {"seconds", extra_seconds.front().second}});
@@ -263,6 +272,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"input_points", in.points.size() + in.skipped},
                  {"skipped_points", in.skipped + r.skipped_points},
                  {"outlier_points", r.outlier_points},
+                 {"statistical_outlier_points", in.statistical_outliers},
                  {"dimension", D},
                  {"options", options},
                  {"h_min_unit_box", r.h_min},
@@ -380,6 +390,13 @@ int run(const Cli& c) {
   if (!c.quiet) {
     std::fprintf(stderr, "[read ] %zu points (%zu skipped: NaN / infinite), %dD, %.2f s\n", in.points.size(),
                  in.skipped, in.dim, read_seconds);
+  }
+  if (c.statistical.mean_k > 0) {
+    const std::vector<std::size_t> kept = lsr::adapters::statistical_inliers(in.points, c.statistical);
+    in.statistical_outliers = in.points.size() - kept.size();
+    lsr::adapters::keep_only(in.points, kept);
+    std::fprintf(stderr, "lsrecon: pcl::StatisticalOutlierRemoval (k = %d, %g deviations) left out %zu point(s), %.2f s\n",
+                 c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
   }
   Outcome out;
   if (in.dim == 2) {

@@ -91,7 +91,9 @@ TEST(LevelSetExtraction, CircleIsOneClosedCounterClockwiseLoopWithSecondOrderErr
     }
     EXPECT_NEAR(area, kPi * c.radius * c.radius, 2 * kPi * c.radius * e.max_error + 1e-12);
     EXPECT_LE(e.max_error, interpolation_bound(2, h, 1.0 / c.radius));
-    if (previous > 0.0) EXPECT_GE(std::log2(previous / e.rms_error), 1.5);
+    if (previous > 0.0) {
+      EXPECT_GE(std::log2(previous / e.rms_error), 1.5);
+    }
     previous = e.rms_error;
   }
 }
@@ -105,7 +107,9 @@ TEST(LevelSetExtraction, SphereIsAClosedGenusZeroSurfaceWithSecondOrderError) {
     const Extracted<3> e = extract<3>(samples, h, sdf);
     expect_closed_surface(e.zero_set, 1, {0});
     EXPECT_LE(e.max_error, interpolation_bound(3, h, 1.0 / s.radius));
-    if (previous > 0.0) EXPECT_GE(std::log2(previous / e.rms_error), 1.5);
+    if (previous > 0.0) {
+      EXPECT_GE(std::log2(previous / e.rms_error), 1.5);
+    }
     previous = e.rms_error;
   }
 }

@@ -56,7 +56,9 @@ void check_symmetric_identity(const Fixture<D>& f, const Eigen::VectorXd& u) {
   const Eigen::VectorXd rhs = -SymmetricCurvatureOperator<D>(f.ops, a).apply(u);
   const double scale = rhs.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < u.size(); ++i) {
-    if (!f.ops.on_boundary[i]) EXPECT_LE(std::abs(lhs[i] - rhs[i]), 1e-12 * scale) << i;
+    if (!f.ops.on_boundary[i]) {
+      EXPECT_LE(std::abs(lhs[i] - rhs[i]), 1e-12 * scale) << i;
+    }
   }
   // The diagonal used for preconditioning is the diagonal of G^T W G.
   const SymmetricCurvatureOperator<D> op(f.ops, a);

@@ -38,7 +38,9 @@ Outcome run(const TestShape& shape, const SampledShape& sample, const Reconstruc
   o.genus = o.topology.genus;
   std::sort(o.genus.begin(), o.genus.end());
   // Genuine samples are never isolated: on a surface the nearest neighbour is within a spacing.
-  if (options.outlier_factor > 0.0) EXPECT_EQ(o.r.outlier_points, 0u);
+  if (options.outlier_factor > 0.0) {
+    EXPECT_EQ(o.r.outlier_points, 0u);
+  }
   return o;
 }
 

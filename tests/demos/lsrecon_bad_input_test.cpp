@@ -198,7 +198,7 @@ TEST_F(BadInput, OutputsThatCannotBeWrittenAreRefusedBeforeTheRun) {
 }
 
 TEST_F(BadInput, AbsurdOptionsExitWithTwoNamingTheOption) {
-  for (const std::string& option : {"--resolution 1e9", "--resolution -3", "--resolution nan", "--time-step 1e300",
+  for (const std::string option : {"--resolution 1e9", "--resolution -3", "--resolution nan", "--time-step 1e300",
                                     "--max-iterations 2.7", "--threads -1", "--alpha inf", "--max-memory -1",
                                     "--resolution=abc"}) {
     const CliRun r = run("--demo sphere " + path("o.ply") + " --quiet " + option);

@@ -200,6 +200,33 @@ TEST(PclLevelSetReconstruction, InputNormalsAreAlignedWithTheCloudAndOutward) {
   }
 }
 
+// A cluster of outliers defeats the isolated-point rule (each has close neighbours) and becomes
+// a component of its own; PCL's statistical filter, asked for, removes it first.
+TEST(PclLevelSetReconstruction, StatisticalFilterRemovesAClusterOfOutliers) {
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : lsr::sample_test_shape(lsr::make_test_shape("sphere"), 3000).points) {
+    cloud->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+  }
+  const std::size_t genuine = cloud->size();
+  const Eigen::Vector3f far = (*cloud)[0].getVector3fMap() * 1.5f;
+  for (int k = 0; k < 6; ++k) cloud->push_back(pcl::PointXYZ(far.x() + 0.01f * k, far.y(), far.z() - 0.01f * k));
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(cloud);
+  ls.setStatisticalOutlierFilter(16, 3.0);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok) << ls.getStatus().message;
+  EXPECT_GE(ls.getStatus().statistical_outlier_points, 6u);
+  EXPECT_LE(ls.getStatus().statistical_outlier_points, 6u + genuine / 100);  // see statistical_outliers_test
+  for (std::size_t i = genuine; i < cloud->size(); ++i) EXPECT_TRUE(std::isnan(ls.getInputNormals()[i].normal_x));
+  lsr::Points<3> vertices;
+  std::vector<std::array<lsr::Index, 3>> triangles;
+  lsr::adapters::triangles_from_polygon_mesh(mesh, vertices, triangles);
+  const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
+  EXPECT_EQ(t.components, 1);
+  EXPECT_TRUE(t.watertight);
+}
+
 // The library contract (run under the sanitizers too): NaN-only clouds and indices out of range
 // are refused or skipped, an object reused on a second cloud forgets the first, and two objects
 // on two threads at once give what each gives alone.

@@ -4,9 +4,18 @@
 /// written atomically, and quadric decimation.
 #pragma once
 
-// OpenMesh wants its IO header first.
+// OpenMesh wants its IO header first. Its PropertyT::push_back appends a default-constructed
+// VectorT, uninitialised by design (the mesh fills it next); GCC 12 reports that from every
+// file that adds vertices, so the warning is silenced for OpenMesh's code only.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 #include "lsrecon/core/level_set_extraction.h"
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
+#include "lsrecon/adapters/statistical_outliers.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include <pcl/PolygonMesh.h>
@@ -55,6 +56,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     int dimension = 0;       ///< 2 or 3, as used
     std::size_t skipped_points = 0;  ///< NaN / infinite points left out
     std::size_t outlier_points = 0;  ///< isolated points left out (no input normal either)
+    std::size_t statistical_outlier_points = 0;  ///< left out by setStatisticalOutlierFilter's filter
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
     std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };
@@ -73,6 +75,13 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// are left out; 0 keeps every point (lsr::ReconstructionOptions::outlier_factor).
   void setOutlierFactor(double factor) { options_.outlier_factor = factor; }
   double getOutlierFactor() const { return options_.outlier_factor; }
+  /// @brief Run pcl::StatisticalOutlierRemoval (setMeanK(mean_k), setStddevMulThresh(stddev_mul))
+  /// on the input first, for scans with clusters of outliers that the isolated-point rule above
+  /// keeps; mean_k = 0 (the default) is off. Removed points get NaN input normals. Keep the
+  /// threshold high (3): on a random sample its tail is genuine points of sparse regions, and
+  /// the holes their removal leaves let the front in (README.md, "Outliers").
+  void setStatisticalOutlierFilter(int mean_k, double stddev_mul) { statistical_ = {mean_k, stddev_mul}; }
+  const lsr::adapters::StatisticalOutlierFilter& getStatisticalOutlierFilter() const { return statistical_; }
   /// @brief Coarsest mesh size in the unit box (lsr::ReconstructionOptions::h_max).
   void setMaximumSize(double h_max) { options_.h_max = h_max; }
   double getMaximumSize() const { return options_.h_max; }
@@ -154,6 +163,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   bool run(pcl::PointCloud<pcl::PointNormal>& vertices, std::vector<pcl::Vertices>& polygons);
 
   lsr::ReconstructionOptions options_;
+  lsr::adapters::StatisticalOutlierFilter statistical_;
   lsr::ProgressCallback progress_;
   int dimension_ = 0;
   Status status_;

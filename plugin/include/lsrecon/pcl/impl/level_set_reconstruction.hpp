@@ -88,8 +88,12 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
   vertices.clear();
   polygons.clear();
   try {
-    const lsr::adapters::ConvertedPoints in = lsr::adapters::points_from_cloud(*this->input_, this->indices_.get());
+    lsr::adapters::ConvertedPoints in = lsr::adapters::points_from_cloud(*this->input_, this->indices_.get());
     status_.skipped_points = in.skipped_non_finite + in.skipped_bad_index;
+    const std::vector<std::size_t> kept = lsr::adapters::statistical_inliers(in.points, statistical_);
+    status_.statistical_outlier_points = in.points.size() - kept.size();
+    lsr::adapters::keep_only(in.points, kept);
+    lsr::adapters::keep_only(in.source, kept);
     if (in.points.empty()) {
       throw lsr::InvalidInput("the cloud has no finite point", "check the input cloud and its indices");
     }
