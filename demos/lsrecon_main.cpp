@@ -220,21 +220,30 @@ lsr::ProgressCallback printer(bool quiet) {
     const double lap = clock.lap();
     elapsed += lap;
     stage_seconds += lap;
-    std::fprintf(stderr, "\r[%-5s] %3.0f%%  %6.1f s", stage.c_str(), 100 * std::max(0.0, fraction), elapsed);
+    if (fraction < 0.0) {  // a stage that cannot say how far it is
+      std::fprintf(stderr, "\r[%-5s]       %6.1f s", stage.c_str(), elapsed);
+    } else {
+      std::fprintf(stderr, "\r[%-5s] %3.0f%%  %6.1f s", stage.c_str(), 100 * fraction, elapsed);
+    }
     if (fraction > 0.05) std::fprintf(stderr, "  ETA %5.1f s ", stage_seconds * (1 - fraction) / fraction);
     return true;
   };
 }
 
+// What was written: for the report and the summary line.
 struct Outcome {
   std::size_t vertices = 0, faces = 0, curves = 0;
   int components = 0;
   bool watertight = false;
+  std::string summary;  ///< e.g. "3 closed curve(s), 812 vertices"
 };
+
+// Seconds of the stages outside the solver (read, postprocess, write), in pipeline order.
+using OuterStages = std::vector<std::pair<std::string, double>>;
 
 template <int D>
 void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
-                  double total, const std::vector<std::pair<std::string, double>>& extra_seconds) {
+                  double total, const OuterStages& extra_seconds) {
   using nlohmann::json;
   const lsr::ReconstructionOptions& o = c.solver;
   // The options as given (0 = automatic); lengths in the unit box the data is mapped into.
@@ -365,6 +374,23 @@ void check_writable(const std::string& file, const std::string& input) {
   }
 }
 
+// Solve, write (which returns what it wrote and times its stages), report, one summary line.
+template <int D, class Write>
+int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points, OuterStages stages,
+                    lsr::demos::Stopwatch& total, Write write) {
+  const auto r = lsr::reconstruct<D>(points, c.solver, printer(c.quiet));
+  summarize(r, c.solver.outlier_factor, c.quiet);
+  if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
+  lsr::demos::Stopwatch clock;
+  const Outcome out = write(r, clock, stages);
+  const double seconds = total.lap();
+  if (!c.report.empty()) write_report(c, in, r, out, seconds, stages);
+  std::printf("%s: %s, %s after %d steps, %.1f s -> %s\n", c.demo.empty() ? c.input.c_str() : c.demo.c_str(),
+              out.summary.c_str(), r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged",
+              r.iterations, seconds, c.output.c_str());
+  return 0;
+}
+
 int run(const Cli& c) {
   check_writable(c.output, c.input);
   if (!c.report.empty()) check_writable(c.report, c.input);
@@ -398,52 +424,37 @@ int run(const Cli& c) {
     std::fprintf(stderr, "lsrecon: pcl::StatisticalOutlierRemoval (k = %d, %g deviations) left out %zu point(s), %.2f s\n",
                  c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
   }
-  Outcome out;
+  const OuterStages stages = {{"read", read_seconds}};
   if (in.dim == 2) {
     lsr::Points<2> planar;
     for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
-    const auto r = lsr::reconstruct<2>(planar, c.solver, printer(c.quiet));
-    summarize(r, c.solver.outlier_factor, c.quiet);
-    if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
-    clock.lap();
-    if (out_ext == "svg") {
-      lsr::demos::write_svg(c.output, r.surface.vertices, r.loops, planar);
-    } else {
-      lsr::demos::write_polylines(c.output, r.surface.vertices, r.loops);
-    }
-    out = {r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true};
-    const double write_seconds = clock.lap();
-    const double seconds = total.lap();
-    if (!c.report.empty()) write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"write", write_seconds}});
-    std::printf("%s: %zu closed curve(s), %zu vertices, %s after %d steps, %.1f s -> %s\n",
-                c.demo.empty() ? c.input.c_str() : c.demo.c_str(), r.loops.size(), r.surface.vertices.size(),
-                r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations,
-                seconds, c.output.c_str());
-    return 0;
+    auto write = [&](const lsr::ReconstructionResult<2>& r, lsr::demos::Stopwatch& timer, OuterStages& times) {
+      if (out_ext == "svg") {
+        lsr::demos::write_svg(c.output, r.surface.vertices, r.loops, planar);
+      } else {
+        lsr::demos::write_polylines(c.output, r.surface.vertices, r.loops);
+      }
+      times.emplace_back("write", timer.lap());
+      return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true,
+                     std::to_string(r.loops.size()) + " closed curve(s), " + std::to_string(r.surface.vertices.size()) +
+                         " vertices"};
+    };
+    return solve_and_write<2>(c, in, planar, stages, total, write);
   }
-  const auto r = lsr::reconstruct<3>(in.points, c.solver, printer(c.quiet));
-  summarize(r, c.solver.outlier_factor, c.quiet);
-  if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
-  clock.lap();
-  lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
-  if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
-  lsr::adapters::smooth(mesh, c.smooth);
-  const double postprocess_seconds = clock.lap();
-  lsr::adapters::write_mesh_file(mesh, c.output);
-  const double write_seconds = clock.lap();
-  const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
-  const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);
-  out = {written.vertices.size(), written.facets.size(), 0, t.components, t.watertight};
-  const double seconds = total.lap();
-  if (!c.report.empty()) {
-    write_report(c, in, r, out, seconds, {{"read", read_seconds}, {"postprocess", postprocess_seconds}, {"write", write_seconds}});
-  }
-  std::printf("%s: %zu triangles, %d component(s), %s, %s after %d steps, %.1f s -> %s\n",
-              c.demo.empty() ? c.input.c_str() : c.demo.c_str(), written.facets.size(), t.components,
-              t.watertight ? "watertight" : "NOT watertight",
-              r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations, seconds,
-              c.output.c_str());
-  return 0;
+  auto write = [&](const lsr::ReconstructionResult<3>& r, lsr::demos::Stopwatch& timer, OuterStages& times) {
+    lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
+    if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
+    lsr::adapters::smooth(mesh, c.smooth);
+    times.emplace_back("postprocess", timer.lap());
+    lsr::adapters::write_mesh_file(mesh, c.output);
+    times.emplace_back("write", timer.lap());
+    const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
+    const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);
+    return Outcome{written.vertices.size(), written.facets.size(), 0, t.components, t.watertight,
+                   std::to_string(written.facets.size()) + " triangles, " + std::to_string(t.components) +
+                       " component(s), " + (t.watertight ? "watertight" : "NOT watertight")};
+  };
+  return solve_and_write<3>(c, in, in.points, stages, total, write);
 }
 
 }  // namespace

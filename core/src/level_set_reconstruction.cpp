@@ -613,6 +613,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const Points<D> normals = oriented_normals(sampling, at, Eigen::VectorXd(ops.gradient * best));
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
+  progress.update(o.fit_surface ? "fit" : "extract", -1.0);
   if (o.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);

@@ -204,6 +204,11 @@ TEST_F(Cli, SavesItsCloudAndAnswersVersionHelpAndInlineValues) {
   r = run("--version");
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.output.rfind("lsrecon ", 0), 0u) << r.output;
+  // PCL's naming: the same program as pcl_level_set_reconstruction.
+  const std::string alias = fs::path(LSRECON_CLI).parent_path() / "pcl_level_set_reconstruction";
+  const int version = std::system((alias + " --version > " + path("alias.txt")).c_str());
+  EXPECT_EQ(WEXITSTATUS(version), 0);
+  EXPECT_EQ(read("alias.txt").rfind("lsrecon ", 0), 0u);
   const int view = std::system((std::string(LSRECON_VIEW) + " --help > " + path("view.txt")).c_str());
   EXPECT_EQ(WEXITSTATUS(view), 0);
   EXPECT_NE(read("view.txt").find(".off"), std::string::npos);
