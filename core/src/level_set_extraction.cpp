@@ -43,8 +43,8 @@ class Marcher {
     if (inserted) {
       double t = u_[a] / (u_[a] - u_[b]);  // u_a, u_b on opposite sides: denominator != 0
       t = std::clamp(t, margin_, 1.0 - margin_);
-      out_.vertices.push_back((1.0 - t) * mesh_.vertices[a] + t * mesh_.vertices[b]);
       out_.sources.push_back({a, b, t});
+      out_.vertices.push_back(edge_point_position(mesh_, out_.sources.back()));
     }
     return it->second;
   }
@@ -98,8 +98,7 @@ void Marcher<D>::march(Index s) {
     const Index q[4] = {edge_vertex(at(0), at(2)), edge_vertex(at(0), at(3)),
                         edge_vertex(at(1), at(3)), edge_vertex(at(1), at(2))};
     const auto& X = out_.vertices;
-    const bool split02 = (X[q[0]] - X[q[2]]).squaredNorm() <= (X[q[1]] - X[q[3]]).squaredNorm();
-    if (split02) {
+    if (split_quad_along_02<3>(X[q[0]], X[q[1]], X[q[2]], X[q[3]])) {
       add({q[0], q[1], q[2]}, !even);
       add({q[0], q[2], q[3]}, !even);
     } else {

@@ -26,6 +26,20 @@ struct LevelSetMesh {
   std::vector<EdgePoint> sources;
 };
 
+/// @brief The position of an edge point, computed as the extraction computes it.
+template <int D>
+Vec<D> edge_point_position(const SimplexMesh<D>& mesh, const EdgePoint& e) {
+  return (1.0 - e.t) * mesh.vertices[e.a] + e.t * mesh.vertices[e.b];
+}
+
+/// @brief The diagonal along which marching tetrahedra cuts the quad (q0, q1, q2, q3) into two
+/// triangles: true for q0-q2 (the shorter one), false for q1-q3. The volume split
+/// (level_set_volume_mesh.h) follows the same rule so that its interface is the surface.
+template <int D>
+bool split_quad_along_02(const Vec<D>& q0, const Vec<D>& q1, const Vec<D>& q2, const Vec<D>& q3) {
+  return (q0 - q2).squaredNorm() <= (q1 - q3).squaredNorm();
+}
+
 /// @brief Extracts {u = 0}. u holds one value per mesh vertex.
 /// @param edge_margin output vertices stay this fraction of their edge (clamped to
 /// [1e-9, 0.25]) away from its ends: a mesh vertex just off the level set otherwise makes

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "lsrecon/core/level_set_volume_mesh.h"
+
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/types.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+namespace lsr {
+namespace {
+
+bool negative(double u) { return u < 0.0; }  // as the extraction decides: 0 is outside
+
+std::uint64_t edge_key(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+}
+
+template <int D>
+double signed_measure_of(const Points<D>& x, const std::array<Index, D + 1>& s) {
+  Eigen::Matrix<double, D, D> e;
+  for (int k = 0; k < D; ++k) e.col(k) = x[s[k + 1]] - x[s[0]];
+  return e.determinant() / (D == 2 ? 2.0 : 6.0);
+}
+
+template <int D>
+class Splitter {
+ public:
+  Splitter(const SimplexMesh<D>& mesh, const std::vector<double>& u, const LevelSetMesh<D>& surface)
+      : mesh_(mesh), u_(u) {
+    const Index nv = Index(mesh.vertices.size());
+    out_.vertices = mesh.vertices;
+    out_.vertices.insert(out_.vertices.end(), surface.vertices.begin(), surface.vertices.end());
+    out_.interface_offset = nv;
+    // Orientation is decided on the positions the cut was made at, so that a vertex moved
+    // since (projection) cannot hide an inverted simplex from the quality check.
+    cut_ = mesh.vertices;
+    for (std::size_t i = 0; i < surface.sources.size(); ++i) {
+      const EdgePoint& e = surface.sources[i];
+      edge_.emplace(edge_key(e.a, e.b), nv + Index(i));
+      cut_.push_back(edge_point_position(mesh, e));
+    }
+    for (auto f : surface.facets) {
+      for (Index& v : f) v += nv;
+      out_.interface.push_back(f);
+    }
+  }
+
+  void split(Index s);
+  VolumeMesh<D> take() { return std::move(out_); }
+
+ private:
+  using Simplex = std::array<Index, D + 1>;
+
+  Index edge_point(Index a, Index b) const {
+    const auto it = edge_.find(edge_key(a, b));
+    if (it == edge_.end()) {
+      throw InvalidInput("the surface has no vertex on crossed mesh edge (" + std::to_string(a) + ", " +
+                             std::to_string(b) + ")",
+                         "pass the surface extracted from the same values");
+    }
+    return it->second;
+  }
+
+  void emit(Simplex s, int region) {
+    if (signed_measure_of<D>(cut_, s) < 0.0) std::swap(s[0], s[1]);
+    out_.simplices.push_back(s);
+    out_.regions.push_back(region);
+  }
+
+  void split_prism(std::array<Index, 3> b, std::array<Index, 3> t, std::array<bool, 3> rising, int region);  // 3D
+  // Quad (b_i, b_j, t_j, t_i) of a prism in a face of the box mesh: cut through its smallest
+  // vertex id, as the simplex on the other side of the face cuts it.
+  static bool rising_by_id(Index bi, Index bj, Index ti, Index tj) {
+    return std::min(bi, tj) < std::min(bj, ti);
+  }
+
+  const SimplexMesh<D>& mesh_;
+  const std::vector<double>& u_;
+  std::unordered_map<std::uint64_t, Index> edge_;
+  Points<D> cut_;
+  VolumeMesh<D> out_;
+};
+
+// The prism (b0 b1 b2 | t0 t1 t2), b_i below t_i, whose quad i = (b_i, b_{i+1}, t_{i+1}, t_i) is
+// cut along b_i-t_{i+1} when rising[i], else along b_{i+1}-t_i. Three tetrahedra from a vertex
+// where two cuts meet (Dompierre et al.); a centre vertex when the cuts turn in a cycle.
+template <>
+void Splitter<3>::split_prism(std::array<Index, 3> b, std::array<Index, 3> t, std::array<bool, 3> rising, int region) {
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int i = 0; i < 3; ++i) {
+      if (!rising[i] || rising[(i + 2) % 3]) continue;  // b_i is where two cuts meet
+      std::rotate(b.begin(), b.begin() + i, b.end());
+      std::rotate(t.begin(), t.begin() + i, t.end());
+      const bool one_five = rising[(i + 1) % 3];  // quad (b1 b2 t2 t1) cut along b1-t2
+      if (one_five) {
+        emit({b[0], b[1], b[2], t[2]}, region);
+        emit({b[0], b[1], t[2], t[1]}, region);
+      } else {
+        emit({b[0], b[1], b[2], t[1]}, region);
+        emit({b[0], t[1], b[2], t[2]}, region);
+      }
+      emit({b[0], t[1], t[2], t[0]}, region);
+      return;
+    }
+    // Seen upside down, a top vertex where two cuts meet is a bottom one.
+    std::swap(b, t);
+    for (bool& r : rising) r = !r;
+  }
+  // A cycle: every face cut as given, coned to the centre.
+  const Index c = Index(out_.vertices.size());
+  Vec<3> centre = Vec<3>::Zero(), cut_centre = Vec<3>::Zero();
+  for (int k = 0; k < 3; ++k) {
+    centre += (out_.vertices[b[k]] + out_.vertices[t[k]]) / 6.0;
+    cut_centre += (cut_[b[k]] + cut_[t[k]]) / 6.0;
+  }
+  out_.vertices.push_back(centre);
+  cut_.push_back(cut_centre);
+  emit({b[0], b[1], b[2], c}, region);
+  emit({t[0], t[1], t[2], c}, region);
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (rising[i]) {
+      emit({b[i], b[j], t[j], c}, region);
+      emit({b[i], t[j], t[i], c}, region);
+    } else {
+      emit({b[i], b[j], t[i], c}, region);
+      emit({b[j], t[j], t[i], c}, region);
+    }
+  }
+}
+
+template <>
+void Splitter<2>::split(Index s) {
+  const auto& v = mesh_.simplices[s];
+  int negatives = 0;
+  for (int k = 0; k < 3; ++k) negatives += negative(u_[v[k]]) ? 1 : 0;
+  if (negatives == 0 || negatives == 3) {
+    emit(v, negatives == 3 ? kInsideRegion : kOutsideRegion);
+    return;
+  }
+  // The lone vertex L (the one on its side) and the other two, P and Q.
+  int l = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (negative(u_[v[k]]) == (negatives == 1)) l = k;
+  }
+  const Index L = v[l], P = v[(l + 1) % 3], Q = v[(l + 2) % 3];
+  const Index e1 = edge_point(L, P), e2 = edge_point(L, Q);
+  const int lone = negative(u_[L]) ? kInsideRegion : kOutsideRegion;
+  const int other = lone == kInsideRegion ? kOutsideRegion : kInsideRegion;
+  emit({L, e1, e2}, lone);
+  // The quad (e1, P, Q, e2) lies inside this triangle: either diagonal conforms; the shorter.
+  if ((cut_[e1] - cut_[Q]).squaredNorm() <= (cut_[e2] - cut_[P]).squaredNorm()) {
+    emit({e1, P, Q}, other);
+    emit({e1, Q, e2}, other);
+  } else {
+    emit({e1, P, e2}, other);
+    emit({P, Q, e2}, other);
+  }
+}
+
+template <>
+void Splitter<3>::split(Index s) {
+  const auto& v = mesh_.simplices[s];
+  std::array<Index, 4> neg{}, pos{};
+  int nn = 0, np = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (negative(u_[v[k]])) {
+      neg[nn++] = v[k];
+    } else {
+      pos[np++] = v[k];
+    }
+  }
+  if (nn == 0 || nn == 4) {
+    emit(v, nn == 4 ? kInsideRegion : kOutsideRegion);
+    return;
+  }
+  if (nn == 1 || nn == 3) {
+    // A corner tetrahedron at the lone vertex and a prism between the cut and the far face.
+    const Index L = nn == 1 ? neg[0] : pos[0];
+    const std::array<Index, 3> far = nn == 1 ? std::array<Index, 3>{pos[0], pos[1], pos[2]}
+                                             : std::array<Index, 3>{neg[0], neg[1], neg[2]};
+    const std::array<Index, 3> cut = {edge_point(L, far[0]), edge_point(L, far[1]), edge_point(L, far[2])};
+    const int lone = nn == 1 ? kInsideRegion : kOutsideRegion;
+    emit({L, cut[0], cut[1], cut[2]}, lone);
+    std::array<bool, 3> rising{};
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      rising[i] = rising_by_id(cut[i], cut[j], far[i], far[j]);
+    }
+    split_prism(cut, far, rising, lone == kInsideRegion ? kOutsideRegion : kInsideRegion);
+    return;
+  }
+  // Two and two: a prism on each side of the interface quad (a b d c), where a = (n1 p1),
+  // b = (n1 p2), c = (n2 p1), d = (n2 p2). The surface cut that quad (in its order
+  // a, b, d, c) along a-d or b-c.
+  const Index n1 = neg[0], n2 = neg[1], p1 = pos[0], p2 = pos[1];
+  const Index a = edge_point(n1, p1), b = edge_point(n1, p2), c = edge_point(n2, p1), d = edge_point(n2, p2);
+  const bool along_ad = split_quad_along_02<3>(cut_[a], cut_[b], cut_[d], cut_[c]);
+  // Inside: (n1 a b | n2 c d); quads (n1 a c n2), (a b d c), (b n1 n2 d).
+  split_prism({n1, a, b}, {n2, c, d}, {rising_by_id(n1, a, n2, c), along_ad, rising_by_id(b, n1, d, n2)}, kInsideRegion);
+  // Outside: (p1 a c | p2 b d); quads (p1 a b p2), (a c d b), (c p1 p2 d).
+  split_prism({p1, a, c}, {p2, b, d}, {rising_by_id(p1, a, p2, b), along_ad, rising_by_id(c, p1, d, p2)},
+              kOutsideRegion);
+}
+
+// Angles at the simplices' edges: the dihedral angles of a tetrahedron, the angles of a triangle.
+double interior_angle(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {  // at a
+  return std::atan2(std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()), (b - a).dot(c - a));
+}
+
+template <int D>
+void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vector<double>& angles) {
+  if constexpr (D == 2) {
+    for (int k = 0; k < 3; ++k) angles.push_back(interior_angle(x[s[k]], x[s[(k + 1) % 3]], x[s[(k + 2) % 3]]));
+  } else {
+    // At edge (i, j): the angle between the faces opposite k and l, from their outward normals.
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        int k = 0;
+        while (k == i || k == j) ++k;
+        int l = 6 - i - j - k;
+        const Vec<3> e = x[s[j]] - x[s[i]];
+        // Components of the opposite vertices orthogonal to the edge.
+        Vec<3> pk = x[s[k]] - x[s[i]], pl = x[s[l]] - x[s[i]];
+        pk -= e * (pk.dot(e) / e.squaredNorm());
+        pl -= e * (pl.dot(e) / e.squaredNorm());
+        angles.push_back(std::atan2(pk.cross(pl).norm(), pk.dot(pl)));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+template <int D>
+VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& values,
+                                    const LevelSetMesh<D>& surface) {
+  if (values.size() != mesh.vertices.size() || surface.sources.size() != surface.vertices.size()) {
+    throw InvalidInput("values or surface do not match the mesh", "pass the mesh, its nodal values and their surface");
+  }
+  Splitter<D> splitter(mesh, values, surface);
+  for (Index s = 0; s < Index(mesh.simplices.size()); ++s) splitter.split(s);
+  return splitter.take();
+}
+
+template <int D>
+VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
+  VolumeMeshQuality q;
+  std::vector<double> angles;
+  angles.reserve(mesh.simplices.size() * (D == 2 ? 3 : 6));
+  for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
+    const double m = signed_measure_of<D>(mesh.vertices, mesh.simplices[s]);
+    if (m <= 0.0) ++q.inverted;
+    if (mesh.regions[s] == kInsideRegion) {
+      q.inside_measure += m;
+      ++q.inside_simplices;
+    } else {
+      q.outside_measure += m;
+      ++q.outside_simplices;
+    }
+    add_angles<D>(mesh.vertices, mesh.simplices[s], angles);
+  }
+  if (!angles.empty()) {
+    const auto middle = angles.begin() + std::ptrdiff_t(angles.size() / 2);
+    std::nth_element(angles.begin(), middle, angles.end());
+    q.median_angle_degrees = *middle * 180.0 / kPi;
+    q.min_angle_degrees = *std::min_element(angles.begin(), angles.end()) * 180.0 / kPi;
+  }
+  return q;
+}
+
+template VolumeMesh<2> split_along_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, const LevelSetMesh<2>&);
+template VolumeMesh<3> split_along_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, const LevelSetMesh<3>&);
+template VolumeMeshQuality volume_mesh_quality<2>(const VolumeMesh<2>&);
+template VolumeMeshQuality volume_mesh_quality<3>(const VolumeMesh<3>&);
+
+}  // namespace lsr
