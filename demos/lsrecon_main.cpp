@@ -9,6 +9,7 @@
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/adapters/statistical_outliers.h"
+#include "lsrecon/adapters/volume_mesh_files.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/atomic_file.h"
@@ -61,7 +62,7 @@ std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 struct Cli {
-  std::string input, output, demo, report, save_points;
+  std::string input, output, demo, report, save_points, volume_mesh;
   lsr::ReconstructionOptions solver;
   lsr::adapters::StatisticalOutlierFilter statistical;
   int dim = 0;
@@ -102,6 +103,9 @@ Cli parse(int argc, char** argv) {
       .number("dim", "D", c.dim, 2, 3, "2 or 3; 0 = 2 if the input is planar, else 3")
       .text("report", "FILE.json", c.report, "write the figures of the run as JSON")
       .text("save-points", "FILE.xyz", c.save_points, "also write the input points (a --demo cloud) as text")
+      .text("volume-mesh", "FILE", c.volume_mesh,
+            "also write meshes of the inside (label 1) and the outside (2) of the result within the box, "
+            "sharing its surface (label 10; box walls 20): .mesh (Medit), .msh (Gmsh 2.2), .vtu")
       .flag("quiet", c.quiet, "no progress on stderr");
   line.group("mesh")
       .number("resolution", "R", s.h_min > 0 ? 1 / s.h_min : 0.0, 0, 1e5, false,
@@ -161,6 +165,14 @@ Cli parse(int argc, char** argv) {
               " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
   }
   if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) line.fail("--decimate and --smooth apply to 3D meshes only");
+  if (!c.volume_mesh.empty()) {
+    if (!lsr::adapters::has_role(lsr::adapters::file_extension(c.volume_mesh), lsr::adapters::FileRole::volume_output)) {
+      line.fail("cannot write the volume mesh '" + c.volume_mesh + "': use " +
+                lsr::adapters::extensions(lsr::adapters::FileRole::volume_output));
+    }
+    if (c.decimate > 0 || c.smooth > 0) line.fail("--decimate and --smooth would detach the surface from --volume-mesh");
+    s.volume_mesh = true;
+  }
   return c;
 }
 
@@ -236,6 +248,7 @@ struct Outcome {
   int components = 0;
   bool watertight = false;
   std::string summary;  ///< e.g. "3 closed curve(s), 812 vertices"
+  lsr::VolumeMeshQuality volume;  ///< with --volume-mesh
 };
 
 // Seconds of the stages outside the solver (read, postprocess, write), in pipeline order.
@@ -305,6 +318,19 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
                  {"components", out.components},
                  {"watertight", out.watertight}};
+  if (!c.volume_mesh.empty()) {
+    const lsr::VolumeMeshQuality& q = out.volume;
+    report["volume_mesh"] = {{"file", c.volume_mesh},
+                             {"inside_simplices", q.inside_simplices},
+                             {"outside_simplices", q.outside_simplices},
+                             {"inverted", q.inverted},
+                             {"surface_vertices_pulled_back", r.volume.pulled_back},
+                             {"min_angle_degrees", q.min_angle_degrees},
+                             {"median_angle_degrees", q.median_angle_degrees},
+                             {"small_angle_fraction", q.small_angle_fraction},
+                             {"inside_measure_input_units", q.inside_measure},
+                             {"outside_measure_input_units", q.outside_measure}};
+  }
   lsr::write_file_atomically(c.report, [&](const std::string& file) {
     std::ofstream j(file);
     if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
@@ -382,7 +408,21 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
   summarize(r, c.solver.outlier_factor, c.quiet);
   if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
   lsr::demos::Stopwatch clock;
-  const Outcome out = write(r, clock, stages);
+  Outcome out = write(r, clock, stages);
+  if (!c.volume_mesh.empty()) {
+    lsr::adapters::write_volume_mesh(c.volume_mesh, r.volume);
+    out.volume = lsr::volume_mesh_quality(r.volume);
+    stages.emplace_back("volume mesh", clock.lap());
+    const lsr::VolumeMeshQuality& q = out.volume;
+    std::fprintf(stderr,
+                 "[volume] %zu inside + %zu outside %s, %s min %.2f median %.1f degrees, %.1f%% with one below 5, "
+                 "%zu inverted, %zu surface "
+                 "vertices kept short of the fit to keep their simplices valid -> %s\n",
+                 q.inside_simplices, q.outside_simplices, D == 3 ? "tetrahedra" : "triangles",
+                 D == 3 ? "dihedral angles" : "angles", q.min_angle_degrees, q.median_angle_degrees,
+                 100 * q.small_angle_fraction, q.inverted,
+                 r.volume.pulled_back, c.volume_mesh.c_str());
+  }
   const double seconds = total.lap();
   if (!c.report.empty()) write_report(c, in, r, out, seconds, stages);
   std::printf("%s: %s, %s after %d steps, %.1f s -> %s\n", c.demo.empty() ? c.input.c_str() : c.demo.c_str(),
@@ -395,6 +435,7 @@ int run(const Cli& c) {
   check_writable(c.output, c.input);
   if (!c.report.empty()) check_writable(c.report, c.input);
   if (!c.save_points.empty()) check_writable(c.save_points, c.input);
+  if (!c.volume_mesh.empty()) check_writable(c.volume_mesh, c.input);
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
@@ -437,7 +478,8 @@ int run(const Cli& c) {
       times.emplace_back("write", timer.lap());
       return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true,
                      std::to_string(r.loops.size()) + " closed curve(s), " + std::to_string(r.surface.vertices.size()) +
-                         " vertices"};
+                         " vertices",
+                     {}};
     };
     return solve_and_write<2>(c, in, planar, stages, total, write);
   }
@@ -452,7 +494,8 @@ int run(const Cli& c) {
     const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);
     return Outcome{written.vertices.size(), written.facets.size(), 0, t.components, t.watertight,
                    std::to_string(written.facets.size()) + " triangles, " + std::to_string(t.components) +
-                       " component(s), " + (t.watertight ? "watertight" : "NOT watertight")};
+                       " component(s), " + (t.watertight ? "watertight" : "NOT watertight"),
+                   {}};
   };
   return solve_and_write<3>(c, in, in.points, stages, total, write);
 }

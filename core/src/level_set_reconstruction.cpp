@@ -4,6 +4,8 @@
 /// renormalise, stopping test) -> extraction of the best iterate -> back to input coordinates.
 #include "lsrecon/core/level_set_reconstruction.h"
 
+#include "lsrecon/core/level_set_volume_mesh.h"
+
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/outside_flood_fill.h"
 #include "lsrecon/core/point_location.h"
@@ -333,21 +335,35 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
 
 // The output surface of `values`, closed: a front or fit that reaches the box (a handful of
 // points spanning the box, a fit extrapolated past the data) is capped just inside the walls.
+// The capped values are left in `values`: the volume split cuts along the same level set.
 template <int D>
-LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, std::vector<double> values) {
+LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, std::vector<double>& values) {
   for (std::size_t v = 0; v < values.size(); ++v) {
     if (on_wall<D>(mesh.vertices[v])) values[v] = std::max(values[v], std::numeric_limits<double>::min());
   }
   return extract_zero_level_set(mesh, values, kOutputEdgeMargin);
 }
 
+// The inside and outside meshes, sharing the output surface, when asked for.
+template <int D>
+void attach_volume(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const std::vector<double>& values,
+                   bool wanted) {
+  if (!wanted) return;
+  r.volume = split_along_level_set(mesh, values, r.surface);
+  // Where the split had to pull a vertex back, the surface follows: it is the inside's boundary.
+  for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
+    r.surface.vertices[i] = r.volume.vertices[std::size_t(r.volume.interface_offset) + i];
+  }
+}
+
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
 template <int D>
 void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
-                  const Eigen::VectorXd& u, double level) {
+                  const Eigen::VectorXd& u, double level, bool volume) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
-  r.surface = extract_closed_surface(mesh, std::move(values));
+  r.surface = extract_closed_surface(mesh, values);
+  attach_volume(r, mesh, values, volume);
   const Eigen::VectorXd g = ops.gradient * u;
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
@@ -380,7 +396,7 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
                 const Eigen::VectorXd& u, const Eigen::VectorXd& scale, double trust_factor, double hole_radius,
-                int threads) {
+                bool volume, int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
@@ -400,8 +416,9 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] + hole_radius;
     values[v] = trusted ? f[k] : u[v];
   }
-  r.surface = extract_closed_surface(mesh, std::move(values));
+  r.surface = extract_closed_surface(mesh, values);
   r.normals = fit.project(r.surface.vertices, threads);
+  attach_volume(r, mesh, values, volume);
 }
 
 template <int D>
@@ -618,14 +635,15 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.threads);
+    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, ops, best, r.output_level * box.scale());
+    attach_front(r, mesh, ops, best, r.output_level * box.scale(), o.volume_mesh);
     clock.end("extract");
   }
   for (auto& x : r.surface.vertices) x = box.from_unit(x);
+  for (auto& x : r.volume.vertices) x = box.from_unit(x);
   if constexpr (D == 2) r.loops = closed_loops(r.surface);
   return r;
 }

@@ -50,9 +50,11 @@ class Splitter {
   }
 
   void split(Index s);
-  VolumeMesh<D> take() { return std::move(out_); }
+  VolumeMesh<D> take();
 
  private:
+  void untangle();
+
   using Simplex = std::array<Index, D + 1>;
 
   Index edge_point(Index a, Index b) const {
@@ -131,6 +133,66 @@ void Splitter<3>::split_prism(std::array<Index, 3> b, std::array<Index, 3> t, st
       emit({b[j], t[j], t[i], c}, region);
     }
   }
+}
+
+// A facet of a positively oriented simplex, oriented outwards: the vertices but `opposite`,
+// in an order of the right parity.
+template <int D>
+std::array<Index, D> outward_facet(const std::array<Index, D + 1>& s, int opposite) {
+  std::array<Index, D> f{};
+  for (int k = 0, n = 0; k <= D; ++k) {
+    if (k != opposite) f[n++] = s[k];
+  }
+  // The remaining vertices in order face outwards when the removed one was at an even
+  // position (k = 0: (s1 s2 s3) faces away from s0), inwards otherwise.
+  if (opposite % 2 == 1) std::swap(f[0], f[1]);
+  return f;
+}
+
+// Vertices that moved since the cut (the surface's projection onto a fit) can turn a thin
+// simplex inside out: such vertices go back towards where the cut put them, halving the move
+// until every simplex is positive (at the cut positions they all are, by construction).
+template <int D>
+void Splitter<D>::untangle() {
+  const Index first_movable = out_.interface_offset;
+  std::vector<char> pulled(out_.vertices.size(), 0);
+  constexpr int kHalvings = 10;
+  for (int round = 0; round <= kHalvings; ++round) {
+    std::vector<char> move(out_.vertices.size(), 0);
+    bool any = false;
+    for (const auto& s : out_.simplices) {
+      if (signed_measure_of<D>(out_.vertices, s) > 0.0) continue;
+      for (Index v : s) {
+        if (v >= first_movable) move[v] = pulled[v] = 1;
+      }
+      any = true;
+    }
+    if (!any) break;
+    for (std::size_t v = 0; v < move.size(); ++v) {
+      if (!move[v]) continue;
+      out_.vertices[v] = round == kHalvings ? cut_[v] : Vec<D>(cut_[v] + 0.5 * (out_.vertices[v] - cut_[v]));
+    }
+  }
+  out_.pulled_back = std::size_t(std::count(pulled.begin(), pulled.end(), char(1)));
+}
+
+template <int D>
+VolumeMesh<D> Splitter<D>::take() {
+  untangle();
+  // Facets with every vertex on one wall of the unit box (the mesh's own boundary).
+  for (const auto& s : out_.simplices) {
+    for (int k = 0; k <= D; ++k) {
+      const std::array<Index, D> f = outward_facet<D>(s, k);
+      for (int axis = 0; axis < D; ++axis) {
+        const double w = out_.vertices[f[0]][axis];
+        if (w != 0.0 && w != 1.0) continue;
+        bool on = true;
+        for (Index v : f) on = on && out_.vertices[v][axis] == w;
+        if (on) out_.walls.push_back(f);
+      }
+    }
+  }
+  return std::move(out_);
 }
 
 template <>
@@ -252,6 +314,7 @@ VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
   VolumeMeshQuality q;
   std::vector<double> angles;
   angles.reserve(mesh.simplices.size() * (D == 2 ? 3 : 6));
+  std::size_t small = 0;
   for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
     const double m = signed_measure_of<D>(mesh.vertices, mesh.simplices[s]);
     if (m <= 0.0) ++q.inverted;
@@ -262,8 +325,11 @@ VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
       q.outside_measure += m;
       ++q.outside_simplices;
     }
+    const std::size_t first = angles.size();
     add_angles<D>(mesh.vertices, mesh.simplices[s], angles);
+    if (*std::min_element(angles.begin() + std::ptrdiff_t(first), angles.end()) < 5.0 * kPi / 180.0) ++small;
   }
+  q.small_angle_fraction = mesh.simplices.empty() ? 0.0 : double(small) / double(mesh.simplices.size());
   if (!angles.empty()) {
     const auto middle = angles.begin() + std::ptrdiff_t(angles.size() / 2);
     std::nth_element(angles.begin(), middle, angles.end());

@@ -13,13 +13,20 @@ namespace lsr {
 template <int D, int K>
 void write_vtu(const std::string& path, const Points<D>& points,
                const std::vector<std::array<Index, K>>& cells,
-               const std::vector<NodalField>& fields) {
+               const std::vector<NodalField>& fields, const std::vector<CellLabels>& labels) {
   static_assert(K >= 2 && K <= 4, "cells are lines, triangles or tetrahedra");
   for (const auto& f : fields) {
     if (f.values->size() != points.size()) {
       throw InvalidInput("field '" + f.name + "' has " + std::to_string(f.values->size()) +
                              " values for " + std::to_string(points.size()) + " points",
                          "pass one value per point");
+    }
+  }
+  for (const auto& l : labels) {
+    if (l.values->size() != cells.size()) {
+      throw InvalidInput("labels '" + l.name + "' have " + std::to_string(l.values->size()) + " values for " +
+                             std::to_string(cells.size()) + " cells",
+                         "pass one label per cell");
     }
   }
   const int vtk_type = K == 2 ? 3 : K == 3 ? 5 : 10;
@@ -48,19 +55,29 @@ void write_vtu(const std::string& path, const Points<D>& points,
       for (double v : *f.values) out << v << '\n';
       out << "</DataArray>\n";
     }
-    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    out << "</PointData>\n<CellData>\n";
+    for (const auto& l : labels) {
+      out << "<DataArray type=\"Int32\" Name=\"" << l.name << "\" format=\"ascii\">\n";
+      for (int v : *l.values) out << v << '\n';
+      out << "</DataArray>\n";
+    }
+    out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     out.close();
     if (!out) throw Error("writing " + file + " failed", "check free disk space");
   });
 }
 
 template void write_vtu<2, 2>(const std::string&, const Points<2>&,
-                              const std::vector<std::array<Index, 2>>&, const std::vector<NodalField>&);
+                              const std::vector<std::array<Index, 2>>&, const std::vector<NodalField>&,
+                              const std::vector<CellLabels>&);
 template void write_vtu<2, 3>(const std::string&, const Points<2>&,
-                              const std::vector<std::array<Index, 3>>&, const std::vector<NodalField>&);
+                              const std::vector<std::array<Index, 3>>&, const std::vector<NodalField>&,
+                              const std::vector<CellLabels>&);
 template void write_vtu<3, 3>(const std::string&, const Points<3>&,
-                              const std::vector<std::array<Index, 3>>&, const std::vector<NodalField>&);
+                              const std::vector<std::array<Index, 3>>&, const std::vector<NodalField>&,
+                              const std::vector<CellLabels>&);
 template void write_vtu<3, 4>(const std::string&, const Points<3>&,
-                              const std::vector<std::array<Index, 4>>&, const std::vector<NodalField>&);
+                              const std::vector<std::array<Index, 4>>&, const std::vector<NodalField>&,
+                              const std::vector<CellLabels>&);
 
 }  // namespace lsr

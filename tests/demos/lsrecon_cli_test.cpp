@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace {
@@ -167,6 +168,62 @@ TEST_F(Cli, CommandLineErrorsExitWithTwoAndSayWhatToChange) {
   EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --res 64").status, 2);
   EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --quiet=1").status, 2);
   EXPECT_EQ(run("-h").status, 0);
+}
+
+// Counts of the labels in each section of a Medit file: section -> label -> entities.
+std::map<std::string, std::map<int, int>> medit_labels(const std::string& file) {
+  std::ifstream in(file);
+  std::map<std::string, std::map<int, int>> labels;
+  std::string word;
+  while (in >> word) {
+    if (word != "Vertices" && word != "Tetrahedra" && word != "Triangles" && word != "Edges") continue;
+    const int per_entity = word == "Vertices" ? 0 : word == "Tetrahedra" ? 4 : word == "Triangles" ? 3 : 2;
+    std::size_t n = 0;
+    in >> n;
+    for (std::size_t i = 0; i < n; ++i) {
+      double skip = 0;
+      const int reads = per_entity == 0 ? 3 : per_entity;  // 3D coordinates or vertex indices
+      for (int k = 0; k < reads; ++k) in >> skip;
+      int label = 0;
+      in >> label;
+      ++labels[word][label];
+    }
+  }
+  return labels;
+}
+
+// Inside and outside meshes in the three formats, 3D and 2D, labelled as documented.
+TEST_F(Cli, WritesVolumeMeshesInThreeFormats) {
+  CliRun r = run("--demo sphere --points 3000 --quiet " + path("s.ply") + " --volume-mesh " + path("s.mesh") +
+                 " --report " + path("s.json"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  auto labels = medit_labels(path("s.mesh"));
+  EXPECT_GT(labels["Tetrahedra"][1], 0);
+  EXPECT_GT(labels["Tetrahedra"][2], 0);
+  EXPECT_EQ(labels["Tetrahedra"].size(), 2u);
+  EXPECT_EQ(labels["Triangles"].size(), 2u);  // the surface (10) and the box walls (20)
+  // The surface written is the inside's boundary: as many triangles as the output mesh.
+  pcl::PolygonMesh mesh;
+  ASSERT_EQ(pcl::io::loadPLYFile(path("s.ply"), mesh), 0);
+  EXPECT_EQ(labels["Triangles"][10], int(mesh.polygons.size()));
+  std::ifstream report(path("s.json"));
+  const nlohmann::json j = nlohmann::json::parse(report);
+  EXPECT_EQ(j["volume_mesh"]["inverted"].get<int>(), 0);
+  EXPECT_EQ(j["volume_mesh"]["inside_simplices"].get<int>(), labels["Tetrahedra"][1]);
+
+  r = run("--demo three-shapes --points 3000 --quiet " + path("t.svg") + " --volume-mesh " + path("t.msh"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  const std::string msh = read("t.msh");
+  EXPECT_EQ(msh.rfind("$MeshFormat\n2.2 0 8\n", 0), 0u);
+  EXPECT_NE(msh.find("2 1 \"inside\""), std::string::npos);
+  EXPECT_NE(msh.find("1 10 \"surface\""), std::string::npos);
+  r = run("--demo three-shapes --points 3000 --quiet " + path("t.svg") + " --volume-mesh " + path("t.vtu"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(read("t.vtu").find("Name=\"region\""), std::string::npos);
+  // Unknown format, and a post-processing that would detach the surface: refused up front.
+  EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --volume-mesh " + path("o.stl")).status, 2);
+  EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --volume-mesh " + path("o.mesh") + " --smooth 2").status, 2);
+  EXPECT_FALSE(fs::exists(path("o.ply")));
 }
 
 // --help prints the defaults the library starts with, from the one options object.

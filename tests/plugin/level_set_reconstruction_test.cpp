@@ -227,6 +227,23 @@ TEST(PclLevelSetReconstruction, StatisticalFilterRemovesAClusterOfOutliers) {
   EXPECT_TRUE(t.watertight);
 }
 
+// The inside/outside meshes through the PCL class: their interface is the polygon mesh.
+TEST(PclLevelSetReconstruction, VolumeMeshSharesTheSurface) {
+  pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
+  ls.setInputCloud(torus_cloud<pcl::PointXYZ>(3000));
+  ls.setVolumeMeshOutput(true);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok);
+  const lsr::VolumeMesh<3>& v = ls.getVolumeMesh3D();
+  EXPECT_EQ(v.interface.size(), mesh.polygons.size());
+  EXPECT_EQ(lsr::volume_mesh_quality(v).inverted, 0u);
+  EXPECT_TRUE(ls.getVolumeMesh2D().simplices.empty());
+  ls.setVolumeMeshOutput(false);
+  ls.reconstruct(mesh);
+  EXPECT_TRUE(ls.getVolumeMesh3D().simplices.empty());
+}
+
 // The library contract (run under the sanitizers too): NaN-only clouds and indices out of range
 // are refused or skipped, an object reused on a second cloud forgets the first, and two objects
 // on two threads at once give what each gives alone.

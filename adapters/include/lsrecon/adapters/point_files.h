@@ -31,6 +31,7 @@ enum class FileRole {
   image_input,   ///< pgm ppm pbm pnm png (2D: dark pixels)
   mesh_output,   ///< ply obj off stl vtk
   curve_output,  ///< svg txt
+  volume_output, ///< mesh msh vtu (inside/outside meshes, volume_mesh_files.h)
 };
 
 /// @brief True if files with extension `ext` (lower case, no dot) play `role`.

@@ -12,6 +12,7 @@
 
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/level_set_extraction.h"
+#include "lsrecon/core/level_set_volume_mesh.h"
 #include "lsrecon/core/progress.h"
 #include "lsrecon/core/semi_implicit_step.h"
 
@@ -118,6 +119,9 @@ struct ReconstructionOptions {
   /// Without fit_surface: extract {u = median of u at the data points} instead of {u = 0}
   /// (the front stops up to eps off the data on the side it came from).
   bool level_through_data = true;
+  /// Also return meshes of the inside and the outside within the box (ReconstructionResult::
+  /// volume), sharing the output surface vertex for vertex (level_set_volume_mesh.h).
+  bool volume_mesh = false;
   InitialFront initial_front = InitialFront::tagged;
   LinearSolver solver = LinearSolver::conjugate_gradient;
   double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
@@ -143,6 +147,9 @@ struct ReconstructionResult {
   ReconstructionStatus status = ReconstructionStatus::not_converged;
   LevelSetMesh<D> surface;          ///< in input coordinates; facets oriented outwards
   Points<D> normals;                ///< #surface vertices, unit, outward (from grad u)
+  /// With ReconstructionOptions::volume_mesh: the box split into inside and outside along the
+  /// surface, in input coordinates; its interface vertices are the surface's.
+  VolumeMesh<D> volume;
   std::vector<std::vector<Index>> loops;  ///< 2D only: closed loops in order
   int iterations = 0;               ///< time steps taken
   int best_iteration = 0;           ///< the step whose u is returned

@@ -33,12 +33,18 @@ struct VolumeMesh {
   std::vector<std::array<Index, D + 1>> simplices;  ///< positively oriented
   std::vector<int> regions;                         ///< per simplex: kInsideRegion or kOutsideRegion
   std::vector<std::array<Index, D>> interface;      ///< the surface's facets, normals towards the outside
+  std::vector<std::array<Index, D>> walls;          ///< the box's boundary facets, normals outwards
   Index interface_offset = 0;
+  /// Interface vertices moved back towards where the cut put them, because their final position
+  /// (e.g. on a fit) would have turned a thin simplex inside out; the surface must take their
+  /// positions from here to stay the inside's boundary.
+  std::size_t pulled_back = 0;
 };
 
-/// @brief Splits `mesh` along the zero level set of `values`.
+/// @brief Splits `mesh`, a mesh of the unit box [0,1]^D, along the zero level set of `values`.
 /// @param surface extract_zero_level_set(mesh, values, ...) for the same values; its vertex
-/// positions may have moved since (projection onto a fit), and the volume mesh takes them.
+/// positions may have moved since (projection onto a fit), and the volume mesh takes them,
+/// except where that would invert a simplex (VolumeMesh::pulled_back).
 /// @throw InvalidInput if the surface does not belong to these values.
 template <int D>
 VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& values,
@@ -49,6 +55,7 @@ struct VolumeMeshQuality {
   std::size_t inverted = 0;        ///< simplices of measure <= 0
   double min_angle_degrees = 0.0;  ///< smallest dihedral angle (3D) or angle (2D)
   double median_angle_degrees = 0.0;
+  double small_angle_fraction = 0.0;  ///< of the simplices, those with an angle below 5 degrees
   double inside_measure = 0.0;     ///< volume (area in 2D) of the inside region
   double outside_measure = 0.0;
   std::size_t inside_simplices = 0, outside_simplices = 0;

@@ -129,6 +129,12 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// @brief Threads; 0: all cores (lsr::ReconstructionOptions::threads).
   void setThreads(int n) { options_.threads = n; }
   int getThreads() const { return options_.threads; }
+  /// @brief Also mesh the inside and the outside of the result within the box, sharing its
+  /// surface vertex for vertex (lsr::ReconstructionOptions::volume_mesh); after reconstruct(),
+  /// getVolumeMesh3D() (surfaces) or getVolumeMesh2D() (curves) holds it, in cloud coordinates.
+  void setVolumeMeshOutput(bool on) { options_.volume_mesh = on; }
+  const lsr::VolumeMesh<3>& getVolumeMesh3D() const { return volume3_; }
+  const lsr::VolumeMesh<2>& getVolumeMesh2D() const { return volume2_; }
   /// @brief Called with (stage, fraction in [0, 1]); return false to cancel.
   void setProgressCallback(lsr::ProgressCallback callback) { progress_ = std::move(callback); }
 
@@ -168,6 +174,8 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   int dimension_ = 0;
   Status status_;
   pcl::PointCloud<pcl::Normal> input_normals_;
+  lsr::VolumeMesh<2> volume2_;
+  lsr::VolumeMesh<3> volume3_;
 };
 
 }  // namespace pcl

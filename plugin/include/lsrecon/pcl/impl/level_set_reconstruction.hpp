@@ -85,6 +85,8 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
                                            std::vector<pcl::Vertices>& polygons) {
   status_ = Status();
   input_normals_.clear();
+  volume2_ = {};
+  volume3_ = {};
   vertices.clear();
   polygons.clear();
   try {
@@ -128,12 +130,14 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       lsr::Points<2> planar;
       planar.reserve(in.points.size());
       for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
-      const auto r = lsr::reconstruct<2>(planar, options_, progress_);
+      auto r = lsr::reconstruct<2>(planar, options_, progress_);
+      volume2_ = std::move(r.volume);
       vertices = lsr::adapters::normal_cloud<2>(r.surface.vertices, r.normals, 0.5 * (z_min + z_max));
       polygons = lsr::adapters::polygons_from_loops(r.loops);
       record(r);
     } else {
-      const auto r = lsr::reconstruct<3>(in.points, options_, progress_);
+      auto r = lsr::reconstruct<3>(in.points, options_, progress_);
+      volume3_ = std::move(r.volume);
       vertices = lsr::adapters::normal_cloud<3>(r.surface.vertices, r.normals);
       const float nan = std::numeric_limits<float>::quiet_NaN();
       input_normals_.assign(this->input_->size(), pcl::Normal(nan, nan, nan));
