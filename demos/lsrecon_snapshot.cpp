@@ -12,8 +12,10 @@
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
 #include <vtkDataSet.h>
+#include <vtkCellData.h>
 #include <vtkDataSetMapper.h>
 #include <vtkExtractGeometry.h>
+#include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
 #include <vtkPNGWriter.h>
@@ -78,7 +80,9 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   data->GetBounds(b);
   vtkNew<vtkDataSetMapper> mapper;
   vtkNew<vtkActor> actor;
-  if (v.clip) {
+  const bool flat = b[5] - b[4] <= 1e-12 * std::max(b[1] - b[0], b[3] - b[2]);
+  const bool regions = data->GetCellData()->HasArray("region");  // lsrecon --volume-mesh
+  if (v.clip && !flat) {
     vtkNew<vtkPlane> plane;
     plane->SetOrigin(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
     plane->SetNormal(0, -1, 0);
@@ -99,8 +103,21 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   vtkNew<vtkProperty> back;  // faces seen from behind (inward-oriented) show blue
   back->SetColor(0.45, 0.6, 0.9);
   actor->SetBackfaceProperty(back);
-  const bool flat = b[5] - b[4] <= 1e-12 * std::max(b[1] - b[0], b[3] - b[2]);
-  if (flat) {
+  if (regions) {
+    // Inside (1) blue, outside (2) sand, with the simplices' edges.
+    vtkNew<vtkLookupTable> colours;
+    colours->SetNumberOfTableValues(2);
+    colours->SetTableValue(0, 0.45, 0.6, 0.9);
+    colours->SetTableValue(1, 0.93, 0.87, 0.75);
+    colours->Build();
+    mapper->SetLookupTable(colours);
+    mapper->SetScalarModeToUseCellFieldData();
+    mapper->SelectColorArray("region");
+    mapper->SetScalarRange(1, 2);
+    mapper->ScalarVisibilityOn();
+    actor->GetProperty()->SetEdgeVisibility(true);
+    actor->GetProperty()->SetLineWidth(0.5);
+  } else if (flat) {
     actor->GetProperty()->SetColor(0.1, 0.2, 0.6);
     actor->GetProperty()->SetLineWidth(3.0);
     actor->GetProperty()->LightingOff();
@@ -108,7 +125,7 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   renderer->AddActor(actor);
   renderer->ResetCamera();
   vtkCamera* camera = renderer->GetActiveCamera();
-  if (v.clip) {
+  if (v.clip && !flat) {
     camera->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
     camera->SetViewUp(0, 0, 1);
   } else if (!flat && !v.top) {
