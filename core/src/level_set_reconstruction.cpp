@@ -199,6 +199,10 @@ void check_options(const ReconstructionOptions& o) {
     bad("alpha < 0 makes a front that encloses the data grow away from it",
         "use alpha > 0 (e.g. 2) with the enclosing start, or start inside");
   }
+  if (o.two_sided && o.alpha < 0.0) {
+    bad("two-sided attraction moves the front towards the data from both sides with alpha > 0",
+        "use alpha > 0 (e.g. 2) or 0 (automatic)");
+  }
   if (o.initial_front == InitialFront::inside && o.alpha > 0.0) {
     bad("alpha > 0 makes a front that starts inside the data shrink away from it",
         "use alpha < 0 (e.g. -2) with the inside start");
@@ -299,6 +303,23 @@ double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd&
   for (const auto& loc : at) values.push_back(interpolate(loc, u));
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
   return values[values.size() / 2];
+}
+
+// The data term of Zhao, Osher and Fedkiw's convection towards the data, in the form the step
+// takes: u_t = alpha d grad d . grad u = |grad u| alpha d cos(theta), theta between the normal
+// and the direction away from the data. The front moves towards the data from either side at
+// the speed alpha d of the one-sided term (same CFL), and stops on it.
+template <int D>
+Eigen::VectorXd two_sided_drive(const P1Operators<D>& ops, const Eigen::VectorXd& d, const Points<D>& away,
+                                const Eigen::VectorXd& u) {
+  const Eigen::VectorXd g = ops.gradient * u;
+  Eigen::VectorXd drive(d.size());
+  for (Eigen::Index v = 0; v < d.size(); ++v) {
+    const Vec<D> gv = g.template segment<D>(D * v);
+    const double norm = gv.norm();
+    drive[v] = norm > 0.0 ? d[v] * away[std::size_t(v)].dot(gv) / norm : 0.0;
+  }
+  return drive;
 }
 
 // The signed distance to the boundary of the flooded vertices (> 0 in the flood); empty when
@@ -559,6 +580,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   clock.end("setup");
 
+  // Two-sided attraction: the unit direction away from the nearest data point per vertex.
+  Points<D> to_data;
+  if (o.two_sided) {
+    to_data.resize(nv, Vec<D>::Zero());
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (dist[v] > 0.0) to_data[v] = (mesh.vertices[v] - data.points()[std::size_t(nearest[v])]) / dist[v];
+    }
+  }
   double front_distance = std::numeric_limits<double>::infinity();
   std::vector<char> pinned(at.size(), 0), held(nv, 0);
   step.held = &held;
@@ -572,10 +601,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     for (int n = 1; n <= o.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
       SolverReport solve;
-      u = semi_implicit_step(ops, d, u, step, &solve);
+      u = semi_implicit_step(ops, o.two_sided ? two_sided_drive(ops, d, to_data, u) : d, u, step, &solve);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
-      if (o.pin_reached_data) pin_reached_data(at, cells, u, step.alpha, reach, pinned, d, held);
+      if (o.pin_reached_data && !o.two_sided) pin_reached_data(at, cells, u, step.alpha, reach, pinned, d, held);
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on.
@@ -673,12 +702,13 @@ ReconstructionResult<D> reconstruct(const Points<D>& points, const Reconstructio
 template <int D>
 ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDistance<D>& initial,
                                          const ReconstructionOptions& options, const ProgressCallback& progress) {
-  if (options.alpha == 0.0) {
-    throw InvalidInput("a custom start needs an explicit alpha",
-                       "set alpha > 0 (e.g. 2) if the start encloses the data, < 0 (e.g. -2) if it lies inside");
+  if (options.alpha == 0.0 && !options.two_sided) {
+    throw InvalidInput("a custom start needs an explicit alpha, or two-sided attraction",
+                       "set alpha > 0 (e.g. 2) if the start encloses the data, < 0 (e.g. -2) if it lies inside, "
+                       "or two_sided if it crosses the data");
   }
   ReconstructionOptions o = options;
-  o.initial_front = options.alpha > 0.0 ? InitialFront::enclosing : InitialFront::inside;
+  o.initial_front = options.alpha >= 0.0 ? InitialFront::enclosing : InitialFront::inside;
   return cancellable_pipeline<D>(points, o, progress, &initial);
 }
 

@@ -119,6 +119,14 @@ struct ReconstructionOptions {
   /// Without fit_surface: extract {u = median of u at the data points} instead of {u = 0}
   /// (the front stops up to eps off the data on the side it came from).
   bool level_through_data = true;
+  /// Attract the front onto the data from both sides: the data term alpha d |grad u| becomes
+  /// alpha d grad d . grad u (the convection towards the data of Zhao, Osher and Fedkiw 2001),
+  /// so that a start partly inside and partly outside the shape (reconstruct_from) converges.
+  /// Needs alpha >= 0 (0: 2). Nothing is pinned (pin_reached_data is ignored): where the start
+  /// crosses the data the front is on it from the first step, and pins would freeze it across
+  /// the data; attraction from both sides holds it instead. The one-sided term stays the
+  /// default: from outside both agree, and it also pulls fronts that face away from the data.
+  bool two_sided = false;
   /// Also return meshes of the inside and the outside within the box (ReconstructionResult::
   /// volume), sharing the output surface vertex for vertex (level_set_volume_mesh.h).
   bool volume_mesh = false;
@@ -193,11 +201,11 @@ template <int D>
 using SignedDistance = std::function<double(const Vec<D>&)>;
 
 /// @brief reconstruct() starting from the zero set of initial (input coordinates) instead of
-/// a circle / sphere. options.alpha must be given: > 0 when that zero set encloses the data,
-/// < 0 when it lies inside the shape; options.initial_front is ignored. A start that is partly
-/// inside and partly outside the data is not supported (an unsigned d cannot attract from both
-/// sides; see DESIGN.md section 9).
-/// @throw InvalidInput as reconstruct(), or if alpha is 0 or initial has no zero set in the box.
+/// a circle / sphere; options.initial_front is ignored. Either options.two_sided (a start that
+/// crosses the data, e.g. a previous or rough surface of the object), or alpha given: > 0 when
+/// that zero set encloses the data, < 0 when it lies inside the shape.
+/// @throw InvalidInput as reconstruct(), or if alpha is 0 without two_sided, or initial has no
+/// zero set in the box.
 template <int D>
 ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDistance<D>& initial,
                                          const ReconstructionOptions& options,
