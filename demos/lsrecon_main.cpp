@@ -15,6 +15,7 @@
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"
+#include "lsrecon/core/triangle_mesh_distance.h"
 #include "stopwatch.h"
 
 #include <nlohmann/json.hpp>
@@ -62,7 +63,7 @@ std::atomic<bool> g_interrupted{false};
 extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 struct Cli {
-  std::string input, output, demo, report, save_points, volume_mesh;
+  std::string input, output, demo, report, save_points, volume_mesh, init_mesh;
   lsr::ReconstructionOptions solver;
   lsr::adapters::StatisticalOutlierFilter statistical;
   int dim = 0;
@@ -120,6 +121,9 @@ Cli parse(int argc, char** argv) {
   line.group("front")
       .text("init", "START", init, "tagged: hug the data from outside (flood from the box walls); "
             "enclose: a sphere around it; inside: a sphere inside it", {"tagged", "enclose", "inside"})
+      .text("init-mesh", "FILE", c.init_mesh,
+            "3D: start from this closed mesh (a previous scan, a rough model; .ply .obj .off .stl .vtk), "
+            "which may cross the data: the front is attracted from both sides (two-sided)")
       .number("alpha", "A", s.alpha, -1e3, 1e3, "attraction to the data; 0 = +2 (from outside), -2 (inside)")
       .number("curvature-weight", "B", s.curvature_weight, -1, 1e3, "smoothness; < 0 = local, from spacing and noise")
       .number("time-step", "DT", s.time_step, 0, 100, "0 = 0.2 / |alpha|")
@@ -165,6 +169,10 @@ Cli parse(int argc, char** argv) {
               " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
   }
   if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) line.fail("--decimate and --smooth apply to 3D meshes only");
+  if (!c.init_mesh.empty()) {
+    if (is_curve_output(out)) line.fail("--init-mesh starts a 3D surface; the output is 2D curves");
+    s.two_sided = true;
+  }
   if (!c.volume_mesh.empty()) {
     if (!lsr::adapters::has_role(lsr::adapters::file_extension(c.volume_mesh), lsr::adapters::FileRole::volume_output)) {
       line.fail("cannot write the volume mesh '" + c.volume_mesh + "': use " +
@@ -277,6 +285,8 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"max_memory_bytes", o.max_memory},
                         {"max_mesh_vertices", o.max_vertices},
                         {"threads", o.threads},
+                        {"two_sided", o.two_sided},
+                        {"init_mesh", c.init_mesh},
                         {"sor_mean_k", c.statistical.mean_k},
                         {"sor_stddev", c.statistical.stddev_mul}};
   // Stage times in pipeline order: read, the solver's stages, then what follows them.
@@ -400,11 +410,32 @@ void check_writable(const std::string& file, const std::string& input) {
   }
 }
 
+// From the default start, or from the user's closed mesh (3D).
+template <int D>
+lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
+  if constexpr (D == 3) {
+    if (!c.init_mesh.empty()) {
+      const lsr::LevelSetMesh<3> start = lsr::adapters::from_openmesh(lsr::adapters::read_mesh_file(c.init_mesh));
+      const lsr::SurfaceTopology t = lsr::analyze_surface(start.vertices, start.facets);
+      if (!t.watertight || start.facets.empty()) {
+        throw lsr::InvalidInput("the start mesh " + c.init_mesh + " is not closed (watertight)",
+                                "close its holes first, or start from the default (drop --init-mesh)");
+      }
+      const lsr::TriangleMeshDistance distance(start.vertices, start.facets);
+      const lsr::SignedDistance<3> sdf = [&distance](const lsr::Vec<3>& p) { return distance.signed_distance(p); };
+      return lsr::reconstruct_from<3>(points, sdf, c.solver, printer(c.quiet));
+    }
+  } else if (!c.init_mesh.empty()) {
+    throw lsr::InvalidInput("--init-mesh starts a surface, and the input is planar (2D)", "drop --init-mesh");
+  }
+  return lsr::reconstruct<D>(points, c.solver, printer(c.quiet));
+}
+
 // Solve, write (which returns what it wrote and times its stages), report, one summary line.
 template <int D, class Write>
 int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points, OuterStages stages,
                     lsr::demos::Stopwatch& total, Write write) {
-  const auto r = lsr::reconstruct<D>(points, c.solver, printer(c.quiet));
+  const auto r = solve<D>(c, points);
   summarize(r, c.solver.outlier_factor, c.quiet);
   if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
   lsr::demos::Stopwatch clock;
@@ -436,6 +467,9 @@ int run(const Cli& c) {
   if (!c.report.empty()) check_writable(c.report, c.input);
   if (!c.save_points.empty()) check_writable(c.save_points, c.input);
   if (!c.volume_mesh.empty()) check_writable(c.volume_mesh, c.input);
+  if (!c.init_mesh.empty() && !std::filesystem::exists(c.init_mesh)) {
+    throw lsr::Error("the start mesh " + c.init_mesh + " does not exist", "check the --init-mesh path");
+  }
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);

@@ -11,7 +11,6 @@
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 
-#include <pcl/io/vtk_lib_io.h>
 #include <pcl/point_types.h>
 #include <pcl/visualization/pcl_visualizer.h>
 
@@ -43,16 +42,10 @@ std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> read_loops(const std::string& p
   return loops;
 }
 
-// Every mesh format lsrecon writes: VTK through PCL, the others through OpenMesh.
+// Every mesh format lsrecon writes.
 pcl::PolygonMesh read_result_mesh(const std::string& path) {
   pcl::PolygonMesh mesh;
-  if (lsr::adapters::file_extension(path) == "vtk") {
-    if (pcl::io::loadPolygonFile(path, mesh) == 0) throw std::runtime_error("cannot read the mesh " + path);
-    return mesh;
-  }
-  lsr::adapters::TriMesh tri;
-  if (!OpenMesh::IO::read_mesh(tri, path)) throw std::runtime_error("cannot read the mesh " + path);
-  const lsr::LevelSetMesh<3> m = lsr::adapters::from_openmesh(tri);
+  const lsr::LevelSetMesh<3> m = lsr::adapters::from_openmesh(lsr::adapters::read_mesh_file(path));
   pcl::PointCloud<pcl::PointXYZ> vertices;
   for (const auto& v : m.vertices) vertices.push_back(pcl::PointXYZ(float(v.x()), float(v.y()), float(v.z())));
   pcl::toPCLPointCloud2(vertices, mesh.cloud);

@@ -2,6 +2,7 @@
 /// @file openmesh_mesh.cpp
 #include "lsrecon/adapters/openmesh_mesh.h"
 
+#include "lsrecon/adapters/file_header_checks.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "double_mesh_writer.h"
@@ -12,12 +13,14 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <pcl/conversions.h>
 #include <pcl/io/vtk_io.h>
+#include <pcl/io/vtk_lib_io.h>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Smoother/JacobiLaplaceSmootherT.hh>
 
 #include <algorithm>
+#include <fstream>
 #include <cctype>
 
 namespace lsr::adapters {
@@ -75,6 +78,25 @@ pcl::PolygonMesh to_polygon_mesh(const TriMesh& mesh) {
 }
 
 }  // namespace
+
+TriMesh read_mesh_file(const std::string& path) {
+  const std::string ext = file_extension(path);
+  if (!has_role(ext, FileRole::mesh_output)) {
+    throw Error("cannot read a mesh from '" + path + "'", "use a mesh file ending in " + extensions(FileRole::mesh_output));
+  }
+  if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path");
+  TriMesh mesh;
+  if (ext == "vtk") {
+    pcl::PolygonMesh polygons;
+    if (pcl::io::loadPolygonFileVTK(path, polygons) == 0) throw Error("cannot read the mesh " + path, "check the file");
+    LevelSetMesh<3> triangles;
+    triangles_from_polygon_mesh(polygons, triangles.vertices, triangles.facets);
+    return to_openmesh(triangles, {});
+  }
+  check_declared_size(path);
+  if (!OpenMesh::IO::read_mesh(mesh, path)) throw Error("cannot read the mesh " + path, "check the file");
+  return mesh;
+}
 
 void write_mesh_file(const TriMesh& mesh, const std::string& path) {
   const std::string ext = file_extension(path);

@@ -2,8 +2,7 @@
 /// @file surface_distance.cpp
 #include "lsrecon/core/surface_distance.h"
 
-#include "lsrecon/core/nearest_point_index.h"
-#include "lsrecon/core/point_simplex_distance.h"
+#include "lsrecon/core/triangle_mesh_distance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,49 +78,8 @@ SurfaceDistances compare_to_truth(const Points<3>& vertices, const std::vector<s
   }
   out.mean_to_truth = sum / double(count);
 
-  // Truth -> reconstruction, exact: a triangle whose centroid c lies r from its farthest corner
-  // is at least |q - c| - r from q, so with the nearest vertex at d_v only centroids within
-  // d_v + r can hold the closest point. The few triangles much larger than the rest (coarse
-  // simplices crossed far from the data) are checked for every query instead of widening r.
-  const std::size_t nf = triangles.size();
-  Points<3> centroid(nf);
-  std::vector<double> reach(nf);
-  for (std::size_t f = 0; f < nf; ++f) {
-    const auto& t = triangles[f];
-    centroid[f] = (vertices[t[0]] + vertices[t[1]] + vertices[t[2]]) / 3.0;
-    reach[f] = 0.0;
-    for (int k = 0; k < 3; ++k) reach[f] = std::max(reach[f], (vertices[t[k]] - centroid[f]).norm());
-  }
-  std::vector<double> sorted_reach = reach;
-  std::nth_element(sorted_reach.begin(), sorted_reach.begin() + nf / 2, sorted_reach.end());
-  const double large = 4.0 * sorted_reach[nf / 2];
-  std::vector<Index> large_triangles;
-  double small_reach = 0.0;
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (reach[f] > large) large_triangles.push_back(Index(f));
-    else small_reach = std::max(small_reach, reach[f]);
-  }
-  const NearestPointIndex<3> vertex_index(vertices);
-  const NearestPointIndex<3> centroid_index(centroid);
-  std::vector<double> nearest_vertex;
-  vertex_index.query(truth_samples, nearest_vertex);
-  auto distance_to = [&](const Vec<3>& q, Index f) {
-    const auto& t = triangles[f];
-    return triangle_distance(q, vertices[t[0]], vertices[t[1]], vertices[t[2]]);
-  };
-  std::vector<double> best(truth_samples.size());
-#pragma omp parallel
-  {
-    std::vector<Index> near;
-#pragma omp for schedule(dynamic, 256)
-    for (std::ptrdiff_t q = 0; q < std::ptrdiff_t(truth_samples.size()); ++q) {
-      double b = nearest_vertex[q];
-      centroid_index.within(truth_samples[q], b + small_reach, near);
-      for (Index f : near) b = std::min(b, distance_to(truth_samples[q], f));
-      for (Index f : large_triangles) b = std::min(b, distance_to(truth_samples[q], f));
-      best[q] = b;
-    }
-  }
+  // Truth -> reconstruction, exact.
+  const std::vector<double> best = TriangleMeshDistance(vertices, triangles).distances(truth_samples);
   sum = 0.0;
   for (double b : best) {
     sum += b;

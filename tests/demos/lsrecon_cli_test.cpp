@@ -5,6 +5,8 @@
 #include "cli_fixture.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
+#include "lsrecon/core/adaptive_refinement.h"
+#include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include <pcl/io/pcd_io.h>
@@ -224,6 +226,32 @@ TEST_F(Cli, WritesVolumeMeshesInThreeFormats) {
   EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --volume-mesh " + path("o.stl")).status, 2);
   EXPECT_EQ(run("--demo sphere " + path("o.ply") + " --volume-mesh " + path("o.mesh") + " --smooth 2").status, 2);
   EXPECT_FALSE(fs::exists(path("o.ply")));
+}
+
+// A user's closed mesh as the start, crossing the data: a sphere of radius 1.2 through the
+// tube of the demo torus (major radius 1, minor 0.4) becomes the torus.
+TEST_F(Cli, StartsFromAClosedMeshThatCrossesTheData) {
+  const lsr::Sphere sphere{lsr::Vec<3>(0.5, 0.5, 0.5), 0.4};
+  lsr::AdaptiveMeshOptions o;
+  o.h_min = 1.0 / 32;
+  const lsr::AdaptiveMesh<3> m = lsr::build_adaptive_mesh(lsr::NearestPointIndex<3>(sphere.sample(2000)), o);
+  std::vector<double> u(m.mesh.vertices.size());
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = sphere.signed_distance(m.mesh.vertices[i]);
+  lsr::LevelSetMesh<3> start = lsr::extract_zero_level_set(m.mesh, u);
+  for (auto& v : start.vertices) v = (v - sphere.center) * (1.2 / sphere.radius);
+  lsr::adapters::write_mesh_file(lsr::adapters::to_openmesh(start, {}), path("start.off"));
+  const CliRun r = run("--demo torus --points 5000 --quiet --init-mesh " + path("start.off") + " " + path("t.off"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find(" converged"), std::string::npos) << r.output;
+  expect_closed_mesh(path("t.off"), 1);
+  // An open start mesh, a missing one, or a 2D output: refused, nothing written.
+  std::ofstream(path("open.off")) << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  CliRun bad = run("--demo torus --points 3000 --quiet --init-mesh " + path("open.off") + " " + path("o.off"));
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.output.find("not closed"), std::string::npos) << bad.output;
+  EXPECT_EQ(run("--demo torus --quiet --init-mesh " + path("none.off") + " " + path("o.off")).status, 1);
+  EXPECT_EQ(run("--demo star --quiet --init-mesh " + path("start.off") + " " + path("o.svg")).status, 2);
+  EXPECT_FALSE(fs::exists(path("o.off")));
 }
 
 // --help prints the defaults the library starts with, from the one options object.

@@ -42,6 +42,11 @@ TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals);
 /// @brief Vertices and triangles of an OpenMesh mesh.
 LevelSetMesh<3> from_openmesh(const TriMesh& mesh);
 
+/// @brief Reads a triangle mesh: PLY, OBJ, OFF, STL (OpenMesh, after the header checks of
+/// file_header_checks.h) or VTK (PCL), i.e. every format write_mesh_file writes.
+/// @throw lsr::Error for a missing, unreadable or corrupt file or another extension.
+TriMesh read_mesh_file(const std::string& path);
+
 /// @brief Writes PLY (binary, double), OBJ, OFF or STL by the file's extension, with vertex
 /// normals where the format holds them, 17 significant digits in text, atomically (an existing
 /// file survives a failure). STL holds floats only.
