@@ -15,7 +15,7 @@
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"
-#include "lsrecon/core/triangle_mesh_distance.h"
+#include "lsrecon/core/facet_mesh_distance.h"
 #include "stopwatch.h"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 /// @file surface_distance.cpp
 #include "lsrecon/core/surface_distance.h"
 
-#include "lsrecon/core/triangle_mesh_distance.h"
+#include "lsrecon/core/facet_mesh_distance.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// @file triangle_mesh_distance_test.cpp
+/// @file facet_mesh_distance_test.cpp
 /// @brief Distances to triangle meshes: exact against brute force, and the inside test robust
 /// to rays through edges and vertices.
-#include "lsrecon/core/triangle_mesh_distance.h"
+#include "lsrecon/core/facet_mesh_distance.h"
 
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/analytic_shapes.h"
@@ -73,6 +73,39 @@ TEST(TriangleMeshDistance, MatchesBruteForceAndTheSphereInsideOut) {
     EXPECT_EQ(mesh.distance(queries[k]), brute) << k;
     const double exact = sphere.signed_distance(queries[k]);
     EXPECT_NEAR(mesh.signed_distance(queries[k]), exact, error + 1e-12) << queries[k].transpose();
+  }
+}
+
+TEST(CurveDistance, RaysThroughVerticesCountOnceAndDistancesAreExact) {
+  // The unit square, counter-clockwise, and rays along +x through its corners and edges.
+  const CurveDistance square({Vec<2>(0, 0), Vec<2>(1, 0), Vec<2>(1, 1), Vec<2>(0, 1)}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}});
+  for (double y : {-0.5, 0.0, 0.5, 1.0, 1.5}) {
+    for (double x : {-1.0, 0.5, 2.0}) {
+      const bool on_edge = x == 0.5 && (y == 0.0 || y == 1.0);
+      if (on_edge) continue;
+      EXPECT_EQ(square.inside(Vec<2>(x, y)), x == 0.5 && y == 0.5) << x << ' ' << y;
+    }
+  }
+  EXPECT_DOUBLE_EQ(square.signed_distance(Vec<2>(0.5, 0.4)), -0.4);
+  EXPECT_DOUBLE_EQ(square.signed_distance(Vec<2>(-1.0, 0.5)), 1.0);
+  // A 200-gon: distances against brute force.
+  Points<2> v;
+  std::vector<std::array<Index, 2>> e;
+  for (int k = 0; k < 200; ++k) {
+    v.emplace_back(std::cos(2 * kPi * k / 200), std::sin(2 * kPi * k / 200));
+    e.push_back({k, (k + 1) % 200});
+  }
+  const CurveDistance circle(v, e);
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> coordinate(-2.0, 2.0);
+  for (int k = 0; k < 200; ++k) {
+    const Vec<2> q(coordinate(random), coordinate(random));
+    double brute = std::numeric_limits<double>::infinity();
+    for (const auto& s : e) brute = std::min(brute, segment_distance(q, v[s[0]], v[s[1]]));
+    EXPECT_EQ(circle.distance(q), brute);
+    // Inside the polygon's inscribed circle, outside its circumscribed one; in between, either.
+    if (q.norm() < std::cos(kPi / 200)) EXPECT_TRUE(circle.inside(q)) << q.transpose();
+    if (q.norm() > 1.0) EXPECT_FALSE(circle.inside(q)) << q.transpose();
   }
 }
 
