@@ -14,6 +14,7 @@
 #include "lsrecon/core/shape_corpus.h"
 #include "lsrecon/core/atomic_file.h"
 #include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/core/resolution_hierarchy.h"
 #include "lsrecon/core/surface_topology.h"
 #include "lsrecon/core/facet_mesh_distance.h"
 #include "stopwatch.h"
@@ -70,6 +71,7 @@ struct Cli {
   long decimate = 0;
   unsigned smooth = 0;
   int points = 20000;
+  int levels = 1;
   bool quiet = false;
 };
 
@@ -139,6 +141,9 @@ Cli parse(int argc, char** argv) {
       .number("sor-stddev", "S", c.statistical.stddev_mul, 1e-3, 1e3,
               "... leaving out points whose mean neighbour distance is S deviations above the mean")
       .flag("no-fit", no_fit, "output the front itself, not the fit through the data")
+      .number("levels", "N", c.levels, 1, 8,
+              "N reconstructions, each at twice the resolution of the one before, written as OUT with .l0 (coarsest) "
+              "to .l<N-1> before its extension; 1 = just OUT")
       .number("decimate", "FACES", c.decimate, 4, 1e9, "simplify the 3D result to at most FACES faces; 0 = off")
       .number("smooth", "N", c.smooth, 0, 1000, "N rounds of Laplace smoothing of the 3D result");
   line.group("resources")
@@ -169,6 +174,7 @@ Cli parse(int argc, char** argv) {
               " (3D) or " + lsr::adapters::extensions(lsr::adapters::FileRole::curve_output) + " (2D)");
   }
   if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) line.fail("--decimate and --smooth apply to 3D meshes only");
+  if (c.levels > 1 && !c.init_mesh.empty()) line.fail("--levels starts each level from the data; drop --init-mesh");
   if (!c.init_mesh.empty()) {
     if (is_curve_output(out)) line.fail("--init-mesh starts a 3D surface; the output is 2D curves");
     s.two_sided = true;
@@ -264,7 +270,7 @@ using OuterStages = std::vector<std::pair<std::string, double>>;
 
 template <int D>
 void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
-                  double total, const OuterStages& extra_seconds) {
+                  const std::string& output, double total, const OuterStages& extra_seconds) {
   using nlohmann::json;
   const lsr::ReconstructionOptions& o = c.solver;
   // The options as given (0 = automatic); lengths in the unit box the data is mapped into.
@@ -286,6 +292,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"max_mesh_vertices", o.max_vertices},
                         {"threads", o.threads},
                         {"two_sided", o.two_sided},
+                        {"levels", c.levels},
                         {"init_mesh", c.init_mesh},
                         {"sor_mean_k", c.statistical.mean_k},
                         {"sor_stddev", c.statistical.stddev_mul}};
@@ -323,7 +330,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"stage_seconds", stages},
                  {"total_seconds", total},
                  {"peak_memory_mib", lsr::demos::peak_memory_mib()},
-                 {"output", c.output},
+                 {"output", output},
                  {"output_vertices", out.vertices},
                  {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
                  {"components", out.components},
@@ -410,6 +417,14 @@ void check_writable(const std::string& file, const std::string& input) {
   }
 }
 
+// OUT with .l<k> before its extension: torus.ply -> torus.l0.ply.
+std::string level_path(const std::string& output, int k) {
+  const std::size_t dot = output.find_last_of('.');
+  const std::size_t slash = output.find_last_of('/');
+  const std::size_t at = dot == std::string::npos || (slash != std::string::npos && dot < slash) ? output.size() : dot;
+  return output.substr(0, at) + ".l" + std::to_string(k) + output.substr(at);
+}
+
 // From the default start, or from the user's closed mesh (3D).
 template <int D>
 lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
@@ -433,37 +448,52 @@ lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
 
 // Solve, write (which returns what it wrote and times its stages), report, one summary line.
 template <int D, class Write>
-int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points, OuterStages stages,
+int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points, const OuterStages& read_stages,
                     lsr::demos::Stopwatch& total, Write write) {
-  const auto r = solve<D>(c, points);
-  summarize(r, c.solver.outlier_factor, c.quiet);
-  if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
-  lsr::demos::Stopwatch clock;
-  Outcome out = write(r, clock, stages);
-  if (!c.volume_mesh.empty()) {
-    lsr::adapters::write_volume_mesh(c.volume_mesh, r.volume);
-    out.volume = lsr::volume_mesh_quality(r.volume);
-    stages.emplace_back("volume mesh", clock.lap());
-    const lsr::VolumeMeshQuality& q = out.volume;
-    std::fprintf(stderr,
-                 "[volume] %zu inside + %zu outside %s, %s min %.2f median %.1f degrees, %.1f%% with one below 5, "
-                 "%zu inverted, %zu surface "
-                 "vertices kept short of the fit to keep their simplices valid -> %s\n",
-                 q.inside_simplices, q.outside_simplices, D == 3 ? "tetrahedra" : "triangles",
-                 D == 3 ? "dihedral angles" : "angles", q.min_angle_degrees, q.median_angle_degrees,
-                 100 * q.small_angle_fraction, q.inverted,
-                 r.volume.pulled_back, c.volume_mesh.c_str());
+  std::vector<lsr::ReconstructionResult<D>> levels;
+  if (c.levels > 1) {
+    levels = lsr::reconstruct_levels<D>(points, c.levels, c.solver, false, printer(c.quiet));
+  } else {
+    levels.push_back(solve<D>(c, points));
   }
-  const double seconds = total.lap();
-  if (!c.report.empty()) write_report(c, in, r, out, seconds, stages);
-  std::printf("%s: %s, %s after %d steps, %.1f s -> %s\n", c.demo.empty() ? c.input.c_str() : c.demo.c_str(),
-              out.summary.c_str(), r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged",
-              r.iterations, seconds, c.output.c_str());
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const lsr::ReconstructionResult<D>& r = levels[k];
+    summarize(r, c.solver.outlier_factor, c.quiet);
+    if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
+    const bool finest = k + 1 == levels.size();
+    const std::string output = c.levels > 1 ? level_path(c.output, int(k)) : c.output;
+    OuterStages stages = read_stages;
+    lsr::demos::Stopwatch clock;
+    Outcome out = write(r, output, clock, stages);
+    if (finest && !c.volume_mesh.empty()) {
+      lsr::adapters::write_volume_mesh(c.volume_mesh, r.volume);
+      out.volume = lsr::volume_mesh_quality(r.volume);
+      stages.emplace_back("volume mesh", clock.lap());
+      const lsr::VolumeMeshQuality& q = out.volume;
+      std::fprintf(stderr,
+                   "[volume] %zu inside + %zu outside %s, %s min %.2f median %.1f degrees, %.1f%% with one below 5, "
+                   "%zu inverted, %zu surface vertices kept short of the fit to keep their simplices valid -> %s\n",
+                   q.inside_simplices, q.outside_simplices, D == 3 ? "tetrahedra" : "triangles",
+                   D == 3 ? "dihedral angles" : "angles", q.min_angle_degrees, q.median_angle_degrees,
+                   100 * q.small_angle_fraction, q.inverted, r.volume.pulled_back, c.volume_mesh.c_str());
+    }
+    // One level: the whole run; several: each level's own solve and write.
+    double seconds = total.lap();
+    if (c.levels > 1) {
+      seconds = 0.0;
+      for (const auto& stage : r.stages) seconds += r.seconds.at(stage);
+      for (std::size_t s = read_stages.size(); s < stages.size(); ++s) seconds += stages[s].second;
+    }
+    if (finest && !c.report.empty()) write_report(c, in, r, out, output, seconds, stages);
+    std::printf("%s: %s, %s after %d steps, %.1f s -> %s\n", c.demo.empty() ? c.input.c_str() : c.demo.c_str(),
+                out.summary.c_str(), r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged",
+                r.iterations, seconds, output.c_str());
+  }
   return 0;
 }
 
 int run(const Cli& c) {
-  check_writable(c.output, c.input);
+  for (int k = 0; k < c.levels; ++k) check_writable(c.levels > 1 ? level_path(c.output, k) : c.output, c.input);
   if (!c.report.empty()) check_writable(c.report, c.input);
   if (!c.save_points.empty()) check_writable(c.save_points, c.input);
   if (!c.volume_mesh.empty()) check_writable(c.volume_mesh, c.input);
@@ -503,11 +533,12 @@ int run(const Cli& c) {
   if (in.dim == 2) {
     lsr::Points<2> planar;
     for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
-    auto write = [&](const lsr::ReconstructionResult<2>& r, lsr::demos::Stopwatch& timer, OuterStages& times) {
+    auto write = [&](const lsr::ReconstructionResult<2>& r, const std::string& output, lsr::demos::Stopwatch& timer,
+                     OuterStages& times) {
       if (out_ext == "svg") {
-        lsr::demos::write_svg(c.output, r.surface.vertices, r.loops, planar);
+        lsr::demos::write_svg(output, r.surface.vertices, r.loops, planar);
       } else {
-        lsr::demos::write_polylines(c.output, r.surface.vertices, r.loops);
+        lsr::demos::write_polylines(output, r.surface.vertices, r.loops);
       }
       times.emplace_back("write", timer.lap());
       return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true,
@@ -517,12 +548,13 @@ int run(const Cli& c) {
     };
     return solve_and_write<2>(c, in, planar, stages, total, write);
   }
-  auto write = [&](const lsr::ReconstructionResult<3>& r, lsr::demos::Stopwatch& timer, OuterStages& times) {
+  auto write = [&](const lsr::ReconstructionResult<3>& r, const std::string& output, lsr::demos::Stopwatch& timer,
+                   OuterStages& times) {
     lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
     if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
     lsr::adapters::smooth(mesh, c.smooth);
     times.emplace_back("postprocess", timer.lap());
-    lsr::adapters::write_mesh_file(mesh, c.output);
+    lsr::adapters::write_mesh_file(mesh, output);
     times.emplace_back("write", timer.lap());
     const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
     const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);

@@ -41,7 +41,7 @@
 namespace {
 
 struct View {
-  bool clip = false, top = false;
+  bool clip = false, top = false, edges = false;
 };
 
 vtkSmartPointer<vtkDataSet> read(const std::string& path) {
@@ -103,6 +103,11 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   vtkNew<vtkProperty> back;  // faces seen from behind (inward-oriented) show blue
   back->SetColor(0.45, 0.6, 0.9);
   actor->SetBackfaceProperty(back);
+  if (v.edges) {
+    actor->GetProperty()->SetEdgeVisibility(true);
+    actor->GetProperty()->SetEdgeColor(0.35, 0.3, 0.2);
+    actor->GetProperty()->SetLineWidth(0.5);
+  }
   if (regions) {
     // Inside (1) blue, outside (2) sand, with the simplices' edges.
     vtkNew<vtkLookupTable> colours;
@@ -146,6 +151,7 @@ int main(int argc, char** argv) {
   line.group("view")
       .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
       .flag("top", v.top, "look down the z axis (flat, 2D data always is)")
+      .flag("edges", v.edges, "draw the triangles' edges")
       .number("columns", "N", columns, 0, 100, "views per row; 0 = up to 4")
       .number("width", "W", width, 0, 20000, "image width in pixels; 0 = from the number of views")
       .number("height", "H", height, 0, 20000, "image height in pixels; 0 = from the number of views");

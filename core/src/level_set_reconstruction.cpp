@@ -15,6 +15,7 @@
 #include "lsrecon/core/unit_box_transform.h"
 
 #include <Eigen/Eigenvalues>
+#include <omp.h>
 
 #include <unistd.h>
 
@@ -559,7 +560,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                           : std::numeric_limits<double>::infinity();
   Eigen::VectorXd u(nv);
   if (custom_start) {
-    for (std::size_t i = 0; i < nv; ++i) u[i] = (*custom_start)(box.from_unit(mesh.vertices[i])) * box.scale();
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
+    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nv); ++i) {
+      u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();
+    }
     if (!u.allFinite() || u.minCoeff() >= 0.0 || u.maxCoeff() < 0.0) {
       throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
                          "pass a signed distance that is negative inside a closed curve / surface near the data");

@@ -254,6 +254,19 @@ TEST_F(Cli, StartsFromAClosedMeshThatCrossesTheData) {
   EXPECT_FALSE(fs::exists(path("o.off")));
 }
 
+// Levels of detail: OUT.l0 (coarsest) .. OUT.l<N-1>, each closed, finer each time; OUT itself
+// is not written.
+TEST_F(Cli, WritesLevelsOfDetail) {
+  const CliRun r = run("--demo torus --points 3000 --quiet --levels 2 " + path("t.off"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_FALSE(fs::exists(path("t.off")));
+  expect_closed_mesh(path("t.l0.off"), 1);
+  expect_closed_mesh(path("t.l1.off"), 1);
+  EXPECT_LT(fs::file_size(path("t.l0.off")), fs::file_size(path("t.l1.off")));
+  EXPECT_EQ(run("--demo torus --levels 9 " + path("o.off")).status, 2);
+  EXPECT_EQ(run("--demo torus --levels 2 --init-mesh " + path("t.l0.off") + " " + path("o.off")).status, 2);
+}
+
 // --help prints the defaults the library starts with, from the one options object.
 TEST_F(Cli, HelpShowsTheLibraryDefaults) {
   const CliRun help = run("--help");

@@ -204,6 +204,7 @@ using SignedDistance = std::function<double(const Vec<D>&)>;
 /// a circle / sphere; options.initial_front is ignored. Either options.two_sided (a start that
 /// crosses the data, e.g. a previous or rough surface of the object), or alpha given: > 0 when
 /// that zero set encloses the data, < 0 when it lies inside the shape.
+/// initial is evaluated at every mesh vertex, from several threads at once.
 /// @throw InvalidInput as reconstruct(), or if alpha is 0 without two_sided, or initial has no
 /// zero set in the box.
 template <int D>
