@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file curve_files.h
-/// @brief Writing 2D results: SVG (closed paths, y up) and a plain polyline text format
-/// ("# loop k" then "x y" per vertex), both atomically.
+/// @brief 2D curves: SVG (closed paths, y up) and a plain polyline text format ("# loop k"
+/// then "x y" per vertex), written atomically; the text format read back (a start curve).
 #pragma once
 
 #include "lsrecon/core/atomic_file.h"
@@ -9,12 +9,51 @@
 #include "lsrecon/core/types.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace lsr::demos {
+
+/// @brief Closed curves: the vertices of each loop in order (the last joins the first).
+struct Curves {
+  Points<2> vertices;
+  std::vector<std::vector<Index>> loops;
+};
+
+/// @brief Reads the text format write_polylines writes (a "# loop" line starts each loop).
+/// @throw lsr::Error naming the file and line for what is not a number or a loop of fewer than
+/// 3 vertices.
+inline Curves read_polylines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error("cannot open " + path, "check the path");
+  Curves c;
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (line.rfind("# loop", 0) == 0) {
+      c.loops.emplace_back();
+      continue;
+    }
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    double x = 0, y = 0;
+    if (!(fields >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) {
+      throw Error(path + ":" + std::to_string(number) + ": expected 'x y'", "write one vertex per line");
+    }
+    if (c.loops.empty()) c.loops.emplace_back();
+    c.loops.back().push_back(Index(c.vertices.size()));
+    c.vertices.emplace_back(x, y);
+  }
+  if (c.loops.empty()) throw Error(path + " holds no curve", "write '# loop 0' and then 'x y' per vertex");
+  for (const auto& loop : c.loops) {
+    if (loop.size() < 3) throw Error(path + " has a loop of fewer than 3 vertices", "close every curve with at least 3");
+  }
+  return c;
+}
 
 inline void write_polylines(const std::string& path, const Points<2>& vertices,
                             const std::vector<std::vector<Index>>& loops) {
@@ -41,8 +80,10 @@ inline void write_points(const std::string& path, const Points<3>& points) {
   });
 }
 
+/// @param start if given, drawn dashed in grey (where the front started)
 inline void write_svg(const std::string& path, const Points<2>& vertices,
-                      const std::vector<std::vector<Index>>& loops, const Points<2>& data) {
+                      const std::vector<std::vector<Index>>& loops, const Points<2>& data,
+                      const Curves* start = nullptr) {
   Vec<2> lo = Vec<2>::Constant(1e300), hi = Vec<2>::Constant(-1e300);
   for (const auto& p : data) {
     lo = lo.cwiseMin(p);
@@ -51,6 +92,12 @@ inline void write_svg(const std::string& path, const Points<2>& vertices,
   for (const auto& p : vertices) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
+  }
+  if (start) {
+    for (const auto& p : start->vertices) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
   }
   const double size = std::max((hi - lo).maxCoeff(), 1e-300);
   const double scale = 1000.0 / size;
@@ -62,11 +109,15 @@ inline void write_svg(const std::string& path, const Points<2>& vertices,
     out << std::setprecision(7) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 40 + (hi.x() - lo.x()) * scale
         << "\" height=\"" << 40 + (hi.y() - lo.y()) * scale << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     for (const auto& p : data) out << "<circle cx=\"" << X(p) << "\" cy=\"" << Y(p) << "\" r=\"1.2\" fill=\"#999\"/>\n";
-    for (const auto& loop : loops) {
-      out << "<path fill=\"none\" stroke=\"#1f3a93\" stroke-width=\"2\" d=\"";
-      for (std::size_t i = 0; i < loop.size(); ++i) out << (i ? " L" : "M") << X(vertices[loop[i]]) << ',' << Y(vertices[loop[i]]);
+    auto path_of = [&](const Points<2>& x, const std::vector<Index>& loop, const char* style) {
+      out << "<path fill=\"none\" " << style << " d=\"";
+      for (std::size_t i = 0; i < loop.size(); ++i) out << (i ? " L" : "M") << X(x[loop[i]]) << ',' << Y(x[loop[i]]);
       out << " Z\"/>\n";
+    };
+    if (start) {
+      for (const auto& loop : start->loops) path_of(start->vertices, loop, "stroke=\"#888\" stroke-width=\"2\" stroke-dasharray=\"8 6\"");
     }
+    for (const auto& loop : loops) path_of(vertices, loop, "stroke=\"#1f3a93\" stroke-width=\"2\"");
     out << "</svg>\n";
     if (!out.flush()) throw Error("writing " + path + " failed", "check free disk space");
   });

@@ -124,8 +124,9 @@ Cli parse(int argc, char** argv) {
       .text("init", "START", init, "tagged: hug the data from outside (flood from the box walls); "
             "enclose: a sphere around it; inside: a sphere inside it", {"tagged", "enclose", "inside"})
       .text("init-mesh", "FILE", c.init_mesh,
-            "3D: start from this closed mesh (a previous scan, a rough model; .ply .obj .off .stl .vtk), "
-            "which may cross the data: the front is attracted from both sides (two-sided)")
+            "start from this closed surface (.ply .obj .off .stl .vtk; a previous scan, a rough model) or, "
+            "in 2D, closed curves (.txt as lsrecon writes them), which may cross the data: the front is "
+            "then attracted from both sides")
       .number("alpha", "A", s.alpha, -1e3, 1e3, "attraction to the data; 0 = +2 (from outside), -2 (inside)")
       .number("curvature-weight", "B", s.curvature_weight, -1, 1e3, "smoothness; < 0 = local, from spacing and noise")
       .number("time-step", "DT", s.time_step, 0, 100, "0 = 0.2 / |alpha|")
@@ -176,7 +177,11 @@ Cli parse(int argc, char** argv) {
   if ((c.decimate > 0 || c.smooth > 0) && is_curve_output(out)) line.fail("--decimate and --smooth apply to 3D meshes only");
   if (c.levels > 1 && !c.init_mesh.empty()) line.fail("--levels starts each level from the data; drop --init-mesh");
   if (!c.init_mesh.empty()) {
-    if (is_curve_output(out)) line.fail("--init-mesh starts a 3D surface; the output is 2D curves");
+    const std::string start = lsr::adapters::file_extension(c.init_mesh);
+    if (is_curve_output(out) && start != "txt") line.fail("for 2D curves, --init-mesh takes closed curves as .txt");
+    if (is_mesh_output(out) && !is_mesh_output(start)) {
+      line.fail("for a surface, --init-mesh takes a closed mesh: " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output));
+    }
     s.two_sided = true;
   }
   if (!c.volume_mesh.empty()) {
@@ -441,7 +446,14 @@ lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
       return lsr::reconstruct_from<3>(points, sdf, c.solver, printer(c.quiet));
     }
   } else if (!c.init_mesh.empty()) {
-    throw lsr::InvalidInput("--init-mesh starts a surface, and the input is planar (2D)", "drop --init-mesh");
+    const lsr::demos::Curves start = lsr::demos::read_polylines(c.init_mesh);
+    std::vector<std::array<lsr::Index, 2>> segments;
+    for (const auto& loop : start.loops) {
+      for (std::size_t i = 0; i < loop.size(); ++i) segments.push_back({loop[i], loop[(i + 1) % loop.size()]});
+    }
+    const lsr::CurveDistance distance(start.vertices, segments);
+    const lsr::SignedDistance<2> sdf = [&distance](const lsr::Vec<2>& p) { return distance.signed_distance(p); };
+    return lsr::reconstruct_from<2>(points, sdf, c.solver, printer(c.quiet));
   }
   return lsr::reconstruct<D>(points, c.solver, printer(c.quiet));
 }
@@ -536,7 +548,8 @@ int run(const Cli& c) {
     auto write = [&](const lsr::ReconstructionResult<2>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                      OuterStages& times) {
       if (out_ext == "svg") {
-        lsr::demos::write_svg(output, r.surface.vertices, r.loops, planar);
+        const lsr::demos::Curves start = c.init_mesh.empty() ? lsr::demos::Curves{} : lsr::demos::read_polylines(c.init_mesh);
+        lsr::demos::write_svg(output, r.surface.vertices, r.loops, planar, c.init_mesh.empty() ? nullptr : &start);
       } else {
         lsr::demos::write_polylines(output, r.surface.vertices, r.loops);
       }

@@ -254,6 +254,21 @@ TEST_F(Cli, StartsFromAClosedMeshThatCrossesTheData) {
   EXPECT_FALSE(fs::exists(path("o.off")));
 }
 
+// The paper's figure 8 from the command line: a start circle across the star demo.
+TEST_F(Cli, StartsFromClosedCurvesThatCrossTheData) {
+  std::ofstream start(path("start.txt"));
+  start << "# loop 0\n";
+  for (int k = 0; k < 200; ++k) start << 0.6 + 0.9 * std::cos(2 * lsr::kPi * k / 200) << ' ' << 0.3 + 0.9 * std::sin(2 * lsr::kPi * k / 200) << '\n';
+  start.close();
+  const CliRun r = run("--demo star --points 3000 --init-mesh " + path("start.txt") + " " + path("s.svg") + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("1 closed curve(s)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" converged"), std::string::npos) << r.output;
+  EXPECT_NE(read("s.svg").find("stroke-dasharray"), std::string::npos);  // the start, dashed
+  std::ofstream(path("short.txt")) << "# loop 0\n0 0\n1 0\n";
+  EXPECT_EQ(run("--demo star --init-mesh " + path("short.txt") + " " + path("o.svg") + " --quiet").status, 1);
+}
+
 // Levels of detail: OUT.l0 (coarsest) .. OUT.l<N-1>, each closed, finer each time; OUT itself
 // is not written.
 TEST_F(Cli, WritesLevelsOfDetail) {
