@@ -26,6 +26,109 @@ double signed_measure_of(const Points<D>& x, const std::array<Index, D + 1>& s) 
   return e.determinant() / (D == 2 ? 2.0 : 6.0);
 }
 
+// Angles at the simplices' edges: the dihedral angles of a tetrahedron, the angles of a triangle.
+double interior_angle(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {  // at a
+  return std::atan2(std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()), (b - a).dot(c - a));
+}
+
+template <int D>
+void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vector<double>& angles) {
+  if constexpr (D == 2) {
+    for (int k = 0; k < 3; ++k) angles.push_back(interior_angle(x[s[k]], x[s[(k + 1) % 3]], x[s[(k + 2) % 3]]));
+  } else {
+    // At edge (i, j): the angle between the faces opposite k and l, from their outward normals.
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        int k = 0;
+        while (k == i || k == j) ++k;
+        int l = 6 - i - j - k;
+        const Vec<3> e = x[s[j]] - x[s[i]];
+        // Components of the opposite vertices orthogonal to the edge.
+        Vec<3> pk = x[s[k]] - x[s[i]], pl = x[s[l]] - x[s[i]];
+        pk -= e * (pk.dot(e) / e.squaredNorm());
+        pl -= e * (pl.dot(e) / e.squaredNorm());
+        angles.push_back(std::atan2(pk.cross(pl).norm(), pk.dot(pl)));
+      }
+    }
+  }
+}
+
+template <int D>
+double min_angle(const Points<D>& x, const std::array<Index, D + 1>& s) {
+  std::vector<double> angles;
+  add_angles<D>(x, s, angles);
+  return *std::min_element(angles.begin(), angles.end());
+}
+
+// Slivers come from cuts close to a mesh vertex: the thin simplices between that vertex and the
+// surface. Each box-mesh vertex (not on the surface, not on a wall) in a simplex with an angle
+// below 10 degrees moves towards the centroid of its neighbours, or half-way, when that raises
+// the smallest angle of its simplices (and so keeps them positive). The surface does not move.
+template <int D>
+void improve_slivers(VolumeMesh<D>& m, int passes) {
+  const double bad = 10.0 * kPi / 180.0;
+  const std::size_t nv = m.vertices.size();
+  std::vector<Index> offsets(nv + 1, 0), incident;
+  for (const auto& s : m.simplices) {
+    for (Index v : s) ++offsets[std::size_t(v) + 1];
+  }
+  for (std::size_t v = 1; v <= nv; ++v) offsets[v] += offsets[v - 1];
+  incident.resize(std::size_t(offsets[nv]));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (std::size_t s = 0; s < m.simplices.size(); ++s) {
+    for (Index v : m.simplices[s]) incident[std::size_t(fill[std::size_t(v)]++)] = Index(s);
+  }
+  auto movable = [&](Index v) {
+    if (v >= m.interface_offset) return false;
+    for (int k = 0; k < D; ++k) {
+      if (m.vertices[std::size_t(v)][k] <= 0.0 || m.vertices[std::size_t(v)][k] >= 1.0) return false;  // a wall
+    }
+    return true;
+  };
+  auto worst_around = [&](Index v) {
+    double w = kPi;
+    for (Index k = offsets[std::size_t(v)]; k < offsets[std::size_t(v) + 1]; ++k) {
+      const auto& s = m.simplices[std::size_t(incident[std::size_t(k)])];
+      if (signed_measure_of<D>(m.vertices, s) <= 0.0) return -1.0;
+      w = std::min(w, min_angle<D>(m.vertices, s));
+    }
+    return w;
+  };
+  for (int pass = 0; pass < passes; ++pass) {
+    std::vector<char> candidate(nv, 0);
+    for (const auto& s : m.simplices) {
+      if (min_angle<D>(m.vertices, s) >= bad) continue;
+      for (Index v : s) candidate[std::size_t(v)] = movable(v) ? 1 : 0;
+    }
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!candidate[v]) continue;
+      Vec<D> centroid = Vec<D>::Zero();
+      double count = 0.0;
+      for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
+        for (Index w : m.simplices[std::size_t(incident[std::size_t(k)])]) {
+          if (std::size_t(w) == v) continue;
+          centroid += m.vertices[std::size_t(w)];
+          count += 1.0;
+        }
+      }
+      centroid /= count;
+      const Vec<D> before = m.vertices[v];
+      const double quality = worst_around(Index(v));
+      Vec<D> best = before;
+      double best_quality = quality;
+      for (double step : {1.0, 0.5, 0.25}) {
+        m.vertices[v] = before + step * (centroid - before);
+        const double q = worst_around(Index(v));
+        if (q > best_quality) {
+          best_quality = q;
+          best = m.vertices[v];
+        }
+      }
+      m.vertices[v] = best;
+    }
+  }
+}
+
 template <int D>
 class Splitter {
  public:
@@ -269,33 +372,6 @@ void Splitter<3>::split(Index s) {
               kOutsideRegion);
 }
 
-// Angles at the simplices' edges: the dihedral angles of a tetrahedron, the angles of a triangle.
-double interior_angle(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {  // at a
-  return std::atan2(std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()), (b - a).dot(c - a));
-}
-
-template <int D>
-void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vector<double>& angles) {
-  if constexpr (D == 2) {
-    for (int k = 0; k < 3; ++k) angles.push_back(interior_angle(x[s[k]], x[s[(k + 1) % 3]], x[s[(k + 2) % 3]]));
-  } else {
-    // At edge (i, j): the angle between the faces opposite k and l, from their outward normals.
-    for (int i = 0; i < 4; ++i) {
-      for (int j = i + 1; j < 4; ++j) {
-        int k = 0;
-        while (k == i || k == j) ++k;
-        int l = 6 - i - j - k;
-        const Vec<3> e = x[s[j]] - x[s[i]];
-        // Components of the opposite vertices orthogonal to the edge.
-        Vec<3> pk = x[s[k]] - x[s[i]], pl = x[s[l]] - x[s[i]];
-        pk -= e * (pk.dot(e) / e.squaredNorm());
-        pl -= e * (pl.dot(e) / e.squaredNorm());
-        angles.push_back(std::atan2(pk.cross(pl).norm(), pk.dot(pl)));
-      }
-    }
-  }
-}
-
 }  // namespace
 
 template <int D>
@@ -306,7 +382,9 @@ VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vecto
   }
   Splitter<D> splitter(mesh, values, surface);
   for (Index s = 0; s < Index(mesh.simplices.size()); ++s) splitter.split(s);
-  return splitter.take();
+  VolumeMesh<D> out = splitter.take();
+  improve_slivers(out, 3);
+  return out;
 }
 
 template <int D>
