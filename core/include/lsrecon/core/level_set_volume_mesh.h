@@ -11,6 +11,8 @@
 /// faces are cut along the diagonal through their smallest vertex id, as on the other side of
 /// the face (Dompierre et al. 1999), so the result is conforming; the interface quad follows the
 /// surface's diagonal, and a prism whose three diagonals turn in a cycle gets a centre vertex.
+/// Box-mesh vertices next to slivers then move towards their neighbours' centroid where that
+/// raises the smallest angle around them; the surface does not move.
 #pragma once
 
 #include "lsrecon/core/level_set_extraction.h"
