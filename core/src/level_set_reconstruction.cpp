@@ -5,7 +5,6 @@
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include "lsrecon/core/level_set_volume_mesh.h"
-
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/outside_flood_fill.h"
 #include "lsrecon/core/point_location.h"
@@ -562,7 +561,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   if (custom_start) {
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
     for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nv); ++i) {
-      u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();
+      try {  // an exception must not leave an OpenMP region: NaN, refused just below
+        u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();
+      } catch (...) {
+        u[i] = std::numeric_limits<double>::quiet_NaN();
+      }
     }
     if (!u.allFinite() || u.minCoeff() >= 0.0 || u.maxCoeff() < 0.0) {
       throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
@@ -585,11 +588,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("setup");
 
   // Two-sided attraction: the unit direction away from the nearest data point per vertex.
-  Points<D> to_data;
+  Points<D> away_from_data;
   if (o.two_sided) {
-    to_data.resize(nv, Vec<D>::Zero());
+    away_from_data.resize(nv, Vec<D>::Zero());
     for (std::size_t v = 0; v < nv; ++v) {
-      if (dist[v] > 0.0) to_data[v] = (mesh.vertices[v] - data.points()[std::size_t(nearest[v])]) / dist[v];
+      if (dist[v] > 0.0) away_from_data[v] = (mesh.vertices[v] - data.points()[std::size_t(nearest[v])]) / dist[v];
     }
   }
   double front_distance = std::numeric_limits<double>::infinity();
@@ -605,7 +608,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     for (int n = 1; n <= o.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
       SolverReport solve;
-      u = semi_implicit_step(ops, o.two_sided ? two_sided_drive(ops, d, to_data, u) : d, u, step, &solve);
+      u = semi_implicit_step(ops, o.two_sided ? two_sided_drive(ops, d, away_from_data, u) : d, u, step, &solve);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
       if (o.pin_reached_data && !o.two_sided) pin_reached_data(at, cells, u, step.alpha, reach, pinned, d, held);
