@@ -133,11 +133,13 @@ std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fi
   return h;
 }
 
-// Peak memory per input point and per mesh vertex, measured (README, "Peak memory": 2.3 KB per
-// 3D mesh vertex, about 0.8 KB per point at 1M points) and rounded up.
+// Peak memory per input point and per mesh vertex, measured on random samples and rounded up:
+// trefoil 200k and 1M points at the same 327k vertices peaked at 495 and 929 MiB (0.56 KB per
+// point), and with that the 200k sphere, torus and trefoil at 0.99, 0.97 and 1.2 KB per 3D
+// vertex. 2D: 2 KB per vertex, measured before G^T stopped being stored.
 constexpr double kBytesPerPoint = 1000.0;
 template <int D>
-constexpr double kBytesPerVertex = D == 3 ? 3000.0 : 2000.0;
+constexpr double kBytesPerVertex = D == 3 ? 1300.0 : 2000.0;
 
 // max_memory, or min(4 GiB, half the physical memory).
 double memory_budget(const ReconstructionOptions& o) {
@@ -489,7 +491,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   mo.max_vertices = max_vertices;
   mo.threads = o.threads;
   r.h_min = mo.h_min;
-  const AdaptiveMesh<D> adaptive = build_adaptive_mesh(data, mo, progress);
+  AdaptiveMesh<D> adaptive = build_adaptive_mesh(data, mo, progress);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());
@@ -510,11 +512,16 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const VertexCells cells = pin_cells(scale, data.points().size(), dist, nearest, o.pin_factor);
   Eigen::VectorXd d = distance;  // what drives the front: zero where it is pinned
   const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
+  {
+    // Point location was the last use of the bisection forest: a third of the peak at 200k.
+    const KuhnBisectionForest<D> forest = std::move(adaptive.forest);
+    const std::vector<Index> nodes = std::move(adaptive.simplex_of_node);
+  }
   clock.end("distance");
 
   progress.update("operators", -1.0);
   const VertexNeighbours neighbours = vertex_neighbours(mesh, o.threads);
-  const P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh),
+  P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh, o.solver == LinearSolver::gmres_reference),
                                                    o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
   clock.end("operators");
   progress.update("setup", -1.0);
@@ -670,6 +677,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   if (o.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
+    ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
     attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.volume_mesh, o.threads);
     clock.end("fit");

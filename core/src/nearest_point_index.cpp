@@ -79,21 +79,30 @@ void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, std::vector<
   const std::size_t kk = std::size_t(std::max(1, std::min<int>(k, int(impl_->points.size()))));
   nearest.assign(n * std::size_t(k), -1);
   if (n == 0) return;
-  std::vector<double> flat(n * D);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < D; ++d) flat[i * D + d] = queries[i][d];
-  }
-  std::vector<std::size_t> idx(n * kk);
-  std::vector<double> dist2(n * kk);
-  flann::Matrix<double> q(flat.data(), n, D);
-  flann::Matrix<std::size_t> indices(idx.data(), n, kk);
-  flann::Matrix<double> dists(dist2.data(), n, kk);
   flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, /*sorted=*/true);
   params.cores = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  impl_->index->knnSearch(q, indices, dists, kk, params);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = 0; j < std::size_t(k); ++j) {
-      nearest[i * k + j] = Index(idx[i * kk + std::min(j, kk - 1)]);
+  // FLANN's results take 16 bytes per neighbour (size_t index, double distance): in chunks of
+  // 2^20 neighbours, or 120 neighbours of 200k points would need 0.4 GB at once (measured).
+  const std::size_t chunk = std::max<std::size_t>(1, (std::size_t(1) << 20) / kk);
+  std::vector<double> flat;
+  std::vector<std::size_t> idx;
+  std::vector<double> dist2;
+  for (std::size_t first = 0; first < n; first += chunk) {
+    const std::size_t m = std::min(chunk, n - first);
+    flat.resize(m * D);
+    for (std::size_t i = 0; i < m; ++i) {
+      for (int d = 0; d < D; ++d) flat[i * D + d] = queries[first + i][d];
+    }
+    idx.resize(m * kk);
+    dist2.resize(m * kk);
+    flann::Matrix<double> q(flat.data(), m, D);
+    flann::Matrix<std::size_t> indices(idx.data(), m, kk);
+    flann::Matrix<double> dists(dist2.data(), m, kk);
+    impl_->index->knnSearch(q, indices, dists, kk, params);
+    for (std::size_t i = 0; i < m; ++i) {
+      for (std::size_t j = 0; j < std::size_t(k); ++j) {
+        nearest[(first + i) * k + j] = Index(idx[i * kk + std::min(j, kk - 1)]);
+      }
     }
   }
 }

@@ -11,6 +11,13 @@
 namespace lsr {
 namespace {
 
+// Stored, or computed here when the geometry was computed without them (the pipeline: each
+// simplex is met D + 1 times, and its gradients take less time to compute than to fetch).
+template <int D>
+std::array<Vec<D>, D + 1> gradients_of(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g, Index s) {
+  return g.gradients.empty() ? barycentric_gradients(mesh, s) : g.gradients[std::size_t(s)];
+}
+
 // Row block i of G gathers |K| grad w_{K,j} / |B_i| over the simplices K of the ball of i and
 // their vertices j, at (D i + k, j): its columns are i and its neighbours, the same for the D
 // rows of the block. Written straight into compressed storage, one vertex per task: no triplet
@@ -47,9 +54,10 @@ void assemble_gradient(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g, 
     for (Index b = g.ball_offsets[i]; b < g.ball_offsets[i + 1]; ++b) {
       const Index s = g.ball_simplices[b];
       const double w = g.measure[s] / g.ball_measure[i];
+      const std::array<Vec<D>, D + 1> grad = gradients_of(mesh, g, s);
       for (int j = 0; j <= D; ++j) {
         const Index at = Index(std::lower_bound(cols, cols + size, mesh.simplices[s][j]) - cols);
-        for (int k = 0; k < D; ++k) values[outer[D * i + k] + at] += w * g.gradients[s][j][k];
+        for (int k = 0; k < D; ++k) values[outer[D * i + k] + at] += w * grad[j][k];
       }
     }
   }
@@ -66,9 +74,10 @@ SparseRowMatrix assemble_divergence(const SimplexMesh<D>& mesh, const SimplexGeo
     for (Index b = g.ball_offsets[i]; b < g.ball_offsets[i + 1]; ++b) {
       const Index s = g.ball_simplices[b];
       const double w = g.measure[s] / g.ball_measure[i];
+      const std::array<Vec<D>, D + 1> grad = gradients_of(mesh, g, s);
       for (int j = 0; j <= D; ++j) {
         for (int k = 0; k < D; ++k) {
-          div.emplace_back(i, D * mesh.simplices[s][j] + k, w * g.gradients[s][j][k]);
+          div.emplace_back(i, D * mesh.simplices[s][j] + k, w * grad[j][k]);
         }
       }
     }
@@ -88,35 +97,48 @@ Eigen::VectorXd norms_per_vertex(const Eigen::VectorXd& field) {
 
 int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
-// G^T: row j holds G(D i + k, j) for i in {j} and its neighbours (the block pattern of G is
-// symmetric), found by binary search in row D i of G. Parallel over rows, unlike Eigen's
-// transpose.
+// Where G(D i, j) sits in G's values for each entry (j, i) of the block pattern, found by
+// binary search in row D i (the block pattern of G is symmetric: i is in row block j's columns
+// exactly when j is in row block i's).
 template <int D>
-void transpose_gradient(const SparseRowMatrix& gradient, int threads, SparseRowMatrix& t) {
+std::vector<Index> transpose_index(const SparseRowMatrix& gradient, int threads) {
   const Index nv = Index(gradient.cols());
-  t.resize(nv, D * nv);
-  const auto* g_outer = gradient.outerIndexPtr();
-  const auto* g_cols = gradient.innerIndexPtr();
-  const double* g_values = gradient.valuePtr();
-  auto* outer = t.outerIndexPtr();
-  outer[0] = 0;
-  for (Index j = 0; j < nv; ++j) outer[j + 1] = outer[j] + (g_outer[D * j + 1] - g_outer[D * j]) * D;
-  t.resizeNonZeros(outer[nv]);
-  auto* cols = t.innerIndexPtr();
-  double* values = t.valuePtr();
+  const auto* outer = gradient.outerIndexPtr();
+  const auto* cols = gradient.innerIndexPtr();
+  std::vector<Index> index(std::size_t(outer[D * nv] / D));
 #pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
   for (Index j = 0; j < nv; ++j) {
-    Index out = outer[j];
-    for (Index e = g_outer[D * j]; e < g_outer[D * j + 1]; ++e) {
-      const Index i = g_cols[e];
-      const Index* row = g_cols + g_outer[D * i];
-      const Index at = Index(std::lower_bound(row, g_cols + g_outer[D * i + 1], j) - row);
-      for (int k = 0; k < D; ++k, ++out) {
-        cols[out] = D * i + k;
-        values[out] = g_values[g_outer[D * i + k] + at];
-      }
+    const Index first = outer[D * j], size = outer[D * j + 1] - first;
+    for (Index e = 0; e < size; ++e) {
+      const Index i = cols[first + e];
+      const Index* row = cols + outer[D * i];
+      index[std::size_t(first / D + e)] = outer[D * i] + Index(std::lower_bound(row, cols + outer[D * i + 1], j) - row);
     }
   }
+  return index;
+}
+
+// sum over the entries (j, i) of f(D i + k, G(D i + k, j)), for every j.
+template <int D, class F>
+Eigen::VectorXd gather_columns(const SparseRowMatrix& gradient, const std::vector<Index>& index, F f) {
+  const Index nv = Index(gradient.cols());
+  const auto* outer = gradient.outerIndexPtr();
+  const auto* cols = gradient.innerIndexPtr();
+  const double* values = gradient.valuePtr();
+  Eigen::VectorXd out(nv);
+#pragma omp parallel for schedule(static)
+  for (Index j = 0; j < nv; ++j) {
+    const Index first = outer[D * j], size = outer[D * j + 1] - first;
+    double sum = 0.0;
+    for (Index e = 0; e < size; ++e) {
+      const Index i = cols[first + e];
+      const Index at = index[std::size_t(first / D + e)];
+      const Index stride = outer[D * i + 1] - outer[D * i];
+      for (int k = 0; k < D; ++k) sum += f(D * i + k, values[at + k * stride]);
+    }
+    out[j] = sum;
+  }
+  return out;
 }
 
 }  // namespace
@@ -128,7 +150,7 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
   P1Operators<D> ops;
   // Filled in place: a copy of each would touch another 0.6 GB per million vertices.
   assemble_gradient(mesh, g, neighbours ? *neighbours : vertex_neighbours(mesh, threads), threads, ops.gradient);
-  transpose_gradient<D>(ops.gradient, threads, ops.gradient_transpose);
+  ops.transpose_index = transpose_index<D>(ops.gradient, threads);
   if (with_divergence) ops.divergence = assemble_divergence(mesh, g);
   ops.ball_measure = Eigen::Map<const Eigen::VectorXd>(g.ball_measure.data(), Eigen::Index(g.ball_measure.size()));
   ops.on_boundary.resize(mesh.vertices.size());
@@ -137,6 +159,16 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
     ops.on_boundary[i] = (x.minCoeff() <= 0.0 || x.maxCoeff() >= 1.0) ? 1 : 0;
   }
   return ops;
+}
+
+template <int D>
+Eigen::VectorXd P1Operators<D>::gradient_transpose_times(const Eigen::VectorXd& y) const {
+  return gather_columns<D>(gradient, transpose_index, [&y](Index row, double g) { return g * y[row]; });
+}
+
+template <int D>
+Eigen::VectorXd P1Operators<D>::weighted_column_squares(const Eigen::VectorXd& w) const {
+  return gather_columns<D>(gradient, transpose_index, [&w](Index row, double g) { return w[row] * g * g; });
 }
 
 template <int D>
@@ -165,21 +197,12 @@ SymmetricCurvatureOperator<D>::SymmetricCurvatureOperator(const P1Operators<D>& 
 
 template <int D>
 Eigen::VectorXd SymmetricCurvatureOperator<D>::apply(const Eigen::VectorXd& v) const {
-  const Eigen::VectorXd wg = weights_.cwiseProduct(ops_.gradient * v);
-  return ops_.gradient_transpose * wg;
+  return ops_.gradient_transpose_times(weights_.cwiseProduct(ops_.gradient * v));
 }
 
 template <int D>
 Eigen::VectorXd SymmetricCurvatureOperator<D>::diagonal() const {
-  // diag_i = sum over column i of G of W * G^2: row i of G^T holds that column.
-  const auto& gt = ops_.gradient_transpose;
-  Eigen::VectorXd diag = Eigen::VectorXd::Zero(gt.rows());
-  for (Eigen::Index i = 0; i < gt.outerSize(); ++i) {
-    for (SparseRowMatrix::InnerIterator it(gt, i); it; ++it) {
-      diag[i] += weights_[it.col()] * it.value() * it.value();
-    }
-  }
-  return diag;
+  return ops_.weighted_column_squares(weights_);
 }
 
 template struct P1Operators<2>;

@@ -31,13 +31,32 @@ double signed_measure(const SimplexMesh<D>& mesh, Index s) {
   return edge_matrix(mesh, s).determinant() / factorial(D);
 }
 
+// lambda_k(x) = e_k . J^-1 (x - x0) for k >= 1, so grad lambda_k is row k-1 of J^-1.
 template <int D>
-SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh) {
+std::array<Vec<D>, D + 1> gradients_from(const Eigen::Matrix<double, D, D>& J) {
+  const Eigen::Matrix<double, D, D> Jinv = J.inverse();
+  std::array<Vec<D>, D + 1> grad;
+  Vec<D> sum = Vec<D>::Zero();
+  for (int k = 1; k <= D; ++k) {
+    grad[k] = Jinv.row(k - 1).transpose();
+    sum += grad[k];
+  }
+  grad[0] = -sum;
+  return grad;
+}
+
+template <int D>
+std::array<Vec<D>, D + 1> barycentric_gradients(const SimplexMesh<D>& mesh, Index s) {
+  return gradients_from<D>(edge_matrix(mesh, s));
+}
+
+template <int D>
+SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool with_gradients) {
   const Index ns = Index(mesh.simplices.size());
   const Index nv = Index(mesh.vertices.size());
   SimplexGeometry<D> g;
   g.measure.resize(ns);
-  g.gradients.resize(ns);
+  if (with_gradients) g.gradients.resize(ns);
   Index degenerate = -1;
 #pragma omp parallel for schedule(static)
   for (Index s = 0; s < ns; ++s) {
@@ -49,14 +68,7 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh) {
       continue;
     }
     g.measure[s] = std::abs(det) / factorial(D);
-    // lambda_k(x) = e_k . J^-1 (x - x0) for k >= 1, so grad lambda_k is row k-1 of J^-1.
-    const Eigen::Matrix<double, D, D> Jinv = J.inverse();
-    Vec<D> sum = Vec<D>::Zero();
-    for (int k = 1; k <= D; ++k) {
-      g.gradients[s][k] = Jinv.row(k - 1).transpose();
-      sum += g.gradients[s][k];
-    }
-    g.gradients[s][0] = -sum;
+    if (with_gradients) g.gradients[s] = gradients_from<D>(J);
   }
   if (degenerate >= 0) {
     throw InvalidInput("simplex " + std::to_string(degenerate) + " is degenerate",
@@ -121,7 +133,9 @@ template VertexNeighbours vertex_neighbours<2>(const SimplexMesh<2>&, int);
 template VertexNeighbours vertex_neighbours<3>(const SimplexMesh<3>&, int);
 template double signed_measure<2>(const SimplexMesh<2>&, Index);
 template double signed_measure<3>(const SimplexMesh<3>&, Index);
-template SimplexGeometry<2> compute_simplex_geometry<2>(const SimplexMesh<2>&);
-template SimplexGeometry<3> compute_simplex_geometry<3>(const SimplexMesh<3>&);
+template SimplexGeometry<2> compute_simplex_geometry<2>(const SimplexMesh<2>&, bool);
+template SimplexGeometry<3> compute_simplex_geometry<3>(const SimplexMesh<3>&, bool);
+template std::array<Vec<2>, 3> barycentric_gradients<2>(const SimplexMesh<2>&, Index);
+template std::array<Vec<3>, 4> barycentric_gradients<3>(const SimplexMesh<3>&, Index);
 
 }  // namespace lsr

@@ -75,6 +75,23 @@ TEST(P1Operators, GradientOfLinearFunctionsIsExact) {
   check_linear_gradient_is_exact(fixture<3>(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(4000), 1.0 / 32));
 }
 
+// G^T y gathered from G's values equals Eigen's transpose product, and the same with squares.
+template <int D>
+void check_transpose_gather(const Fixture<D>& f) {
+  const Eigen::Index n = f.ops.gradient.rows();
+  const Eigen::VectorXd y = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+  const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(n, 0.5, 3.0);
+  const Eigen::VectorXd expected = f.ops.gradient.transpose() * y;
+  const Eigen::VectorXd squares = f.ops.gradient.cwiseProduct(f.ops.gradient).transpose() * w;
+  EXPECT_LE((f.ops.gradient_transpose_times(y) - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  EXPECT_LE((f.ops.weighted_column_squares(w) - squares).cwiseAbs().maxCoeff(), 1e-12 * squares.cwiseAbs().maxCoeff());
+}
+
+TEST(P1Operators, TransposeProductsGatheredFromGMatchEigen) {
+  check_transpose_gather(fixture<2>(Circle{Vec<2>(0.5, 0.5), 0.3}.sample(2000), 1.0 / 128));
+  check_transpose_gather(fixture<3>(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(2000), 1.0 / 32));
+}
+
 TEST(P1Operators, SymmetricFormMatchesThePaperOperatorOnInteriorRows) {
   const Circle c{Vec<2>(0.5, 0.5), 0.3};
   const auto f2 = fixture<2>(c.sample(4000), 1.0 / 256);

@@ -135,8 +135,8 @@ struct ReconstructionOptions {
   double solver_tolerance = 1e-6;  ///< relative residual of each linear solve
   /// Memory the run may take, in bytes; 0: min(4 GiB, half the physical memory). Clouds and
   /// meshes predicted to need more are refused before they are built (lsr::ResourceLimit,
-  /// lsr::MeshTooLarge), at the measured peak rounded up: 1 KB per input point, 3 KB per 3D
-  /// mesh vertex, 2 KB per 2D one (4 GiB: about 1.4 million 3D mesh vertices).
+  /// lsr::MeshTooLarge), at the measured peak rounded up: 1 KB per input point, 1.3 KB per 3D
+  /// mesh vertex, 2 KB per 2D one (4 GiB: about 3.3 million 3D mesh vertices).
   double max_memory = 0.0;
   /// Refuse (lsr::MeshTooLarge) meshes predicted to need more vertices; 0: from max_memory.
   Index max_vertices = 0;

@@ -20,15 +20,19 @@ using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, Index>;
 /// @brief The operators of one fixed mesh, assembled once.
 ///
 /// Nodal vector fields are stored as one vector of D * #V entries, component k of vertex i at
-/// D * i + k. G and G^T are assembled (in parallel, straight into compressed storage): products
-/// with them ran 4.6x faster than matrix-free gathers over the simplices (measured, 537k
-/// vertices), whose per-simplex reads are scattered.
+/// D * i + k. G is assembled (in parallel, straight into compressed storage): products with it
+/// ran 4.6x faster than matrix-free gathers over the simplices (measured, 537k vertices), whose
+/// per-simplex reads are scattered. G^T is not stored (it doubled the operators' memory, a
+/// third of the peak): G^T y gathers from G's own values through an index of where each
+/// column entry sits, 4 bytes per block entry instead of 12 per entry.
 template <int D>
 struct P1Operators {
   /// (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|  (eq. 11)
   SparseRowMatrix gradient;
-  /// #V x (D #V): G^T, kept explicitly so that products with it run in parallel.
-  SparseRowMatrix gradient_transpose;
+  /// Per entry (j, i) of G's row-block pattern (row block j, column i, at position
+  /// gradient.outerIndexPtr()[D j] / D + e): the offset of G(D i, j) in G's values; G(D i + k, j)
+  /// lies k row lengths of block i further.
+  std::vector<Index> transpose_index;
   /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
   /// projection eq. (12)-(14) apply to the components of a nodal field. Empty unless assembled
   /// with_divergence (only the paper-form reference and curvature() need it).
@@ -36,6 +40,10 @@ struct P1Operators {
   Eigen::VectorXd ball_measure;  ///< #V: |B_i| (the diagonal of Lambda)
   std::vector<char> on_boundary; ///< #V: 1 for vertices on the walls of the box [0,1]^D
 
+  /// @brief G^T y for y of D #V entries, in parallel and in a fixed order (deterministic).
+  Eigen::VectorXd gradient_transpose_times(const Eigen::VectorXd& y) const;
+  /// @brief sum_k w_{D i + k} G(D i + k, j)^2 over i for every j: diag(G^T W G).
+  Eigen::VectorXd weighted_column_squares(const Eigen::VectorXd& w) const;
   /// @brief |(G u)_i| per vertex.
   Eigen::VectorXd gradient_norms(const Eigen::VectorXd& u) const;
   /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)

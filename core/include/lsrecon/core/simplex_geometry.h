@@ -49,9 +49,15 @@ struct SimplexGeometry {
   std::vector<double> ball_measure;  ///< #V: |B_i| = sum of |K| over B_i
 };
 
-/// @brief Computes measures, gradients and balls.
+/// @brief Computes measures, balls and, with_gradients, the gradients (96 bytes per
+/// tetrahedron, a third of the pipeline's peak at 200k points: without them, consumers compute
+/// each simplex's gradients when they need them, barycentric_gradients()).
 /// @throw InvalidInput if a simplex is degenerate (zero measure).
 template <int D>
-SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh);
+SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool with_gradients = true);
+
+/// @brief The gradients of the barycentric coordinates of simplex s (one per vertex).
+template <int D>
+std::array<Vec<D>, D + 1> barycentric_gradients(const SimplexMesh<D>& mesh, Index s);
 
 }  // namespace lsr
