@@ -314,12 +314,14 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
                                         : lsr::SurfaceDistances{};
-  // The welded mesh, without normals: PCL's marching cubes emit all-zero normals, which
-  // renderers light black.
-  lsr::LevelSetMesh<3> welded;
-  welded.vertices = vertices;
-  welded.facets = triangles;
-  lsr::adapters::write_mesh_file(lsr::adapters::to_openmesh(welded, {}), s.out + "/" + case_name + "-" + method + ".ply");
+  // The welded mesh, without normals (PCL's marching cubes emit all-zero normals, which
+  // renderers light black), through PCL: OpenMesh refuses the non-manifold faces Poisson emits.
+  pcl::PolygonMesh welded;
+  pcl::PointCloud<pcl::PointXYZ> welded_vertices;
+  for (const auto& v : vertices) welded_vertices.push_back(pcl::PointXYZ(float(v.x()), float(v.y()), float(v.z())));
+  pcl::toPCLPointCloud2(welded_vertices, welded.cloud);
+  welded.polygons = lsr::adapters::polygons_from_triangles(triangles);
+  pcl::io::savePLYFileBinary(s.out + "/" + case_name + "-" + method + ".ply", welded);
   if (!p.residuals.empty()) write_convergence_svg(s.out + "/" + case_name + "-convergence.svg", case_name, p.residuals);
   std::string genus;
   for (int g : t.genus) genus += (genus.empty() ? "" : " ") + std::to_string(g);
