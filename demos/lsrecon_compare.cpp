@@ -13,7 +13,6 @@
 /// peak memory is its own.
 #include "command_line.h"
 #include "compare_cases.h"
-#include "lsrecon/adapters/openmesh_mesh.h"  // first: OpenMesh wants its IO header first
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/nearest_point_index.h"

@@ -4,6 +4,7 @@
 /// to rays through edges and vertices.
 #include "lsrecon/core/facet_mesh_distance.h"
 
+#include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
@@ -49,12 +50,9 @@ TEST(TriangleMeshDistance, MatchesBruteForceAndTheSphereInsideOut) {
   // A closed surface from an analytic sphere: distances and signs against brute force and
   // against the sphere itself (which the mesh approximates within the interpolation error).
   const Sphere sphere{Vec<3>(0.5, 0.5, 0.5), 0.3};
-  AdaptiveMeshOptions o;
-  o.h_min = 1.0 / 32;
-  const AdaptiveMesh<3> m = build_adaptive_mesh(NearestPointIndex<3>(sphere.sample(2000)), o);
-  std::vector<double> u(m.mesh.vertices.size());
-  for (std::size_t i = 0; i < u.size(); ++i) u[i] = sphere.signed_distance(m.mesh.vertices[i]);
-  const LevelSetMesh<3> s = extract_zero_level_set(m.mesh, u);
+  const testing::SampledField<3> f =
+      testing::sampled_field<3>(sphere.sample(2000), 1.0 / 32, [&](const Vec<3>& x) { return sphere.signed_distance(x); });
+  const LevelSetMesh<3> s = extract_zero_level_set(f.adaptive.mesh, f.values);
   const TriangleMeshDistance mesh(s.vertices, s.facets);
   std::mt19937 random(3);
   std::uniform_real_distribution<double> coordinate(0.0, 1.0);

@@ -2,6 +2,7 @@
 /// @file level_set_extraction_test.cpp
 /// @brief Marching triangles / tetrahedra on analytic signed distances: topology, orientation
 /// and O(h^2) accuracy.
+#include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
@@ -27,13 +28,10 @@ struct Extracted {
 template <int D>
 Extracted<D> extract(const Points<D>& samples, double h_min,
                      const std::function<double(const Vec<D>&)>& sdf) {
-  AdaptiveMeshOptions o;
-  o.h_min = h_min;
-  const AdaptiveMesh<D> m = build_adaptive_mesh(NearestPointIndex<D>(samples), o);
-  std::vector<double> u(m.mesh.vertices.size());
-  for (std::size_t i = 0; i < u.size(); ++i) u[i] = sdf(m.mesh.vertices[i]);
+  const testing::SampledField<D> f = testing::sampled_field<D>(samples, h_min, sdf);
+  const SimplexMesh<D>& mesh = f.adaptive.mesh;
   Extracted<D> out;
-  out.zero_set = extract_zero_level_set(m.mesh, u);
+  out.zero_set = extract_zero_level_set(mesh, f.values);
   double sum2 = 0.0;
   for (std::size_t i = 0; i < out.zero_set.vertices.size(); ++i) {
     const double e = std::abs(sdf(out.zero_set.vertices[i]));
@@ -43,7 +41,7 @@ Extracted<D> extract(const Points<D>& samples, double h_min,
     EXPECT_LT(src.a, src.b);
     EXPECT_GT(src.t, 0.0);
     EXPECT_LT(src.t, 1.0);
-    const Vec<D> rebuilt = (1 - src.t) * m.mesh.vertices[src.a] + src.t * m.mesh.vertices[src.b];
+    const Vec<D> rebuilt = (1 - src.t) * mesh.vertices[src.a] + src.t * mesh.vertices[src.b];
     EXPECT_LE((rebuilt - out.zero_set.vertices[i]).norm(), 1e-15);
   }
   out.rms_error = std::sqrt(sum2 / double(out.zero_set.vertices.size()));

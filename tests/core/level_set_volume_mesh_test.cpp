@@ -3,6 +3,7 @@
 /// @brief The inside/outside split of a graded box mesh along analytic level sets: conforming,
 /// positively oriented, regions adding up to the box, the inside's boundary equal to the
 /// extracted surface facet for facet, and the inside's measure within the interpolation error.
+#include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
@@ -58,14 +59,10 @@ struct Split {
 
 template <int D>
 Split<D> split(const Points<D>& samples, double h_min, const std::function<double(const Vec<D>&)>& sdf) {
-  AdaptiveMeshOptions o;
-  o.h_min = h_min;
-  const AdaptiveMesh<D> m = build_adaptive_mesh(NearestPointIndex<D>(samples), o);
-  std::vector<double> u(m.mesh.vertices.size());
-  for (std::size_t i = 0; i < u.size(); ++i) u[i] = sdf(m.mesh.vertices[i]);
+  const testing::SampledField<D> f = testing::sampled_field<D>(samples, h_min, sdf);
   Split<D> out;
-  out.surface = extract_zero_level_set(m.mesh, u, 0.01);
-  out.volume = split_along_level_set(m.mesh, u, out.surface);
+  out.surface = extract_zero_level_set(f.adaptive.mesh, f.values, 0.01);
+  out.volume = split_along_level_set(f.adaptive.mesh, f.values, out.surface);
   return out;
 }
 

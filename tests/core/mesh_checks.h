@@ -3,6 +3,7 @@
 /// @brief Test helpers: conformity and shape checks of simplicial meshes of the unit box.
 #pragma once
 
+#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/simplex_geometry.h"
 
 #include <algorithm>
@@ -11,6 +12,22 @@
 #include <string>
 
 namespace lsr::testing {
+
+/// A mesh refined towards samples down to h_min, and f at its vertices.
+template <int D>
+struct SampledField {
+  AdaptiveMesh<D> adaptive;
+  std::vector<double> values;
+};
+
+template <int D, class F>
+SampledField<D> sampled_field(const Points<D>& samples, double h_min, F f) {
+  AdaptiveMeshOptions o;
+  o.h_min = h_min;
+  SampledField<D> s{build_adaptive_mesh(NearestPointIndex<D>(samples), o), {}};
+  for (const auto& x : s.adaptive.mesh.vertices) s.values.push_back(f(x));
+  return s;
+}
 
 /// Empty when every facet is shared by exactly two simplices, or by one on the box boundary.
 template <int D>
