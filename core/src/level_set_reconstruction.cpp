@@ -11,6 +11,7 @@
 #include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/point_validation.h"
 #include "lsrecon/core/renormalization.h"
+#include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/core/unit_box_transform.h"
 
 #include <Eigen/Eigenvalues>
@@ -337,23 +338,38 @@ Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbour
 }
 
 // u0 for the tagged start: the region reachable from the walls while staying farther than
-// gap_factor local scales from the data, after a closing at the hole radius H: first the
-// flood of the vertices farther than H from the data, grown back by H (a union of empty balls
-// of radius H, which cannot pass a sampling hole narrower than H), then restricted to the
-// vertices farther than the gap. Empty when nothing is reachable (data against the walls).
+// gap_factor local scales from the data (`attraction`: the distance to the points, or to their
+// tangent discs when holes are spanned). Over a hole the mesh is coarser than the gap: there a
+// vertex also blocks when the discs pass within half its longest edge (`edge_guard`, empty
+// without discs), so that no edge jumps the discs' plane; "over a hole" meaning the discs are
+// nearer than the points by more than the gap, so that a coarse mesh over sampled parts does not
+// push the start out. Empty when nothing is reachable (data against the walls).
 template <int D>
-Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& distance,
-                             const Eigen::VectorXd& scale,
-                             double gap_factor, double hole_radius, double band, int threads) {
+Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
+                             const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
+                             const std::vector<double>& edge_guard, double gap_factor, double band, int threads) {
   const std::size_t n = mesh.vertices.size();
   std::vector<char> passable(n);
-  for (std::size_t v = 0; v < n; ++v) passable[v] = distance[v] > hole_radius;
-  const Eigen::VectorXd deep = hole_radius > 0.0 ? flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads)
-                                                 : Eigen::VectorXd();
   for (std::size_t v = 0; v < n; ++v) {
-    passable[v] = distance[v] > gap_factor * scale[v] && (deep.size() == 0 || deep[v] > -hole_radius);
+    const double gap = gap_factor * scale[v];
+    passable[v] = attraction[v] > gap &&
+                  (edge_guard.empty() || attraction[v] > std::min(edge_guard[v], distance[v] - gap));
   }
   return flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads);
+}
+
+// Half the longest edge at each vertex within `near` of the data (0 elsewhere): see tagged_start.
+template <int D>
+std::vector<double> half_longest_edges(const SimplexMesh<D>& mesh, const VertexNeighbours& n,
+                                       const std::vector<double>& distance, const Eigen::VectorXd& near) {
+  std::vector<double> out(mesh.vertices.size(), 0.0);
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    if (distance[v] > near[Eigen::Index(v)]) continue;
+    for (Index k = n.offsets[v]; k < n.offsets[v + 1]; ++k) {
+      out[v] = std::max(out[v], 0.5 * (mesh.vertices[n.neighbours[k]] - mesh.vertices[v]).norm());
+    }
+  }
+  return out;
 }
 
 // The output surface of `values`, closed: a front or fit that reaches the box (a handful of
@@ -413,19 +429,15 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
-// With a hole radius H, the front's cap over a hole may lie up to H below the fit's (which
-// spans it by extending the fits of its rim): band and trust zone widen by H so that the fit
-// owns the space between the two.
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
-                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, double trust_factor, double hole_radius,
-                bool volume, int threads) {
+                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, double trust_factor, bool volume, int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
   std::vector<Index> band_vertices;
   for (Eigen::Index v = 0; v < u.size(); ++v) {
-    if (std::abs(u[v]) < band_factor * scale[v] + hole_radius) {
+    if (std::abs(u[v]) < band_factor * scale[v]) {
       band.push_back(mesh.vertices[v]);
       band_vertices.push_back(Index(v));
     }
@@ -436,7 +448,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
   for (std::size_t k = 0; k < band.size(); ++k) {
     const Index v = band_vertices[k];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] + hole_radius;
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
     values[v] = trusted ? f[k] : u[v];
   }
   r.surface = extract_closed_surface(mesh, values);
@@ -553,17 +565,32 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   const double median_eps = median(eps);
   r.tolerance = median_eps / box.scale();
-  // Over a sampling hole the front spans up to hole_radius away from the data.
+  // Measured against the driving d: over a spanned hole, the distance to the discs.
   Eigen::VectorXd front_tolerance(nv);
   for (std::size_t v = 0; v < nv; ++v) {
-    front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * scale[v]) + o.gap_factor * scale[v] + o.hole_radius;
+    front_tolerance[v] = (o.tolerance > 0.0 ? o.tolerance : o.tolerance_factor * scale[v]) + o.gap_factor * scale[v];
   }
   // Renormalisation band. From the tagged start the front moves at most |alpha| dt interval d
-  // <= 0.4 (gap + 1) l between two renormalisations and the fit reads 3 l + H: 4 l + gap + H
-  // covers both. The sphere starts cross the whole box: there, every vertex.
+  // <= 0.4 (gap + 1) l between two renormalisations and the fit reads 3 l: 4 l + gap covers
+  // both (over a spanned hole the start lies the gap above the discs, as elsewhere above the
+  // data). The sphere starts cross the whole box: there, every vertex.
   const double band = o.initial_front == InitialFront::tagged && !custom_start
-                          ? (4.0 + o.gap_factor) * scale.maxCoeff() + o.hole_radius
+                          ? (4.0 + o.gap_factor) * scale.maxCoeff()
                           : std::numeric_limits<double>::infinity();
+  if (o.hole_radius > 0.0) {
+    // Spanned holes: the front is attracted to the points' tangent discs (tangent_discs.h),
+    // exact up to the start's gap plus a margin for its coarse edges over a hole. Within the
+    // gap of the data the points themselves attract: there the discs add nothing over a hole,
+    // and at a concave crease the tilted PCA planes of the points next to it span the groove
+    // less than a gap from its tip (measured: a lid that stalled the double torus's front).
+    std::vector<double> cap(nv);
+    for (std::size_t v = 0; v < nv; ++v) cap[v] = (2.0 * o.gap_factor + 1.0) * scale[v];
+    const std::vector<double> discs = tangent_disc_distance(data, sampling, disc_radii(o.hole_radius, sampling.curvature),
+                                                            mesh.vertices, dist, cap, o.threads);
+    for (std::size_t v = 0; v < nv; ++v) {
+      d[v] = std::min(dist[v], discs[v] + std::max(0.0, o.gap_factor * scale[v] - dist[v]));
+    }
+  }
   Eigen::VectorXd u(nv);
   if (custom_start) {
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
@@ -579,16 +606,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
   } else if (o.initial_front == InitialFront::tagged) {
-    u = tagged_start(mesh, neighbours, distance, scale, o.gap_factor, o.hole_radius, band, o.threads);
+    const std::vector<double> guard =
+        o.hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + o.hole_radius).matrix())
+                            : std::vector<double>();
+    u = tagged_start(mesh, neighbours, d, distance, scale, guard, o.gap_factor, band, o.threads);
     r.tagged_start = u.size() > 0;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
-    if (r.tagged_start && o.hole_radius > 0.0) {
-      // The front only has to close the gap (and span holes): the attraction stops hole_radius
-      // plus the gap below the start, so a cap over a sampling hole cannot tunnel inside.
-      for (Eigen::Index v = 0; v < u.size(); ++v) {
-        if (u[v] < -(o.hole_radius + o.gap_factor * scale[v])) d[v] = 0.0;
-      }
-    }
   } else {
     u = initial_field(mesh, data, o.initial_front, r.h_min);
   }
@@ -679,7 +702,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.hole_radius, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

@@ -44,6 +44,34 @@ void pca(const Points<D>& p, const Index* nearest, int k, double& thickness, Vec
   normal = eig.eigenvectors().col(0);
 }
 
+// A quadric height field fitted by least squares to the neighbours in the tangent frame of p_i
+// (zero if the fit is degenerate: duplicates, colinear points).
+template <int D>
+HeightField<D> fit_height_field(const Points<D>& p, const Index* nearest, int k, std::size_t i, const Vec<D>& normal) {
+  constexpr int kTerms = HeightField<D>::kTerms;
+  HeightField<D> f;
+  const Eigen::Matrix<double, D, D> frame = tangent_frame(normal);
+  // Normal equations (a 6x6 solve per point, cheap next to the k-NN query), in units of the
+  // neighbourhood's radius so that they stay well conditioned.
+  const double radius = (p[nearest[k - 1]] - p[i]).norm();
+  if (!(radius > 0.0)) return f;
+  Eigen::Matrix<double, kTerms, kTerms> ata = Eigen::Matrix<double, kTerms, kTerms>::Zero();
+  Eigen::Matrix<double, kTerms, 1> ath = Eigen::Matrix<double, kTerms, 1>::Zero();
+  for (int j = 0; j < k; ++j) {
+    const Vec<D> y = frame * (p[nearest[j]] - p[i]) / radius;
+    const Eigen::Matrix<double, kTerms, 1> row = HeightField<D>::monomials(y.template head<D - 1>());
+    ata += row * row.transpose();
+    ath += row * y[D - 1];
+  }
+  Eigen::Matrix<double, kTerms, 1> c = ata.ldlt().solve(ath);
+  if (!c.allFinite()) return f;
+  // Back to lengths: the constant scales by r, the slopes not, the second derivatives by 1/r.
+  c[0] *= radius;
+  c.template tail<kTerms - D>() /= radius;
+  for (int t = 0; t < kTerms; ++t) f.coefficients[std::size_t(t)] = c[t];
+  return f;
+}
+
 // Median of raw over each point's neighbourhood.
 std::vector<double> neighbourhood_median(const std::vector<double>& raw, const std::vector<Index>& nearest, int k,
                                          int threads) {
@@ -61,6 +89,64 @@ std::vector<double> neighbourhood_median(const std::vector<double>& raw, const s
 
 }  // namespace
 
+template <int D>
+Eigen::Matrix<double, D, D> tangent_frame(const Vec<D>& normal) {
+  Eigen::Matrix<double, D, D> frame;
+  frame.row(D - 1) = normal.transpose();
+  if constexpr (D == 2) {
+    frame.row(0) << -normal[1], normal[0];
+  } else {
+    const Vec<3> t = normal.unitOrthogonal();
+    frame.row(0) = t.transpose();
+    frame.row(1) = normal.cross(t).transpose();
+  }
+  return frame;
+}
+
+template <int D>
+auto HeightField<D>::monomials(const Eigen::Matrix<double, D - 1, 1>& x) -> Eigen::Matrix<double, kTerms, 1> {
+  Eigen::Matrix<double, kTerms, 1> m;
+  if constexpr (D == 2) {
+    m << 1.0, x[0], 0.5 * x[0] * x[0];
+  } else {
+    m << 1.0, x[0], x[1], 0.5 * x[0] * x[0], x[0] * x[1], 0.5 * x[1] * x[1];
+  }
+  return m;
+}
+
+template <int D>
+double HeightField<D>::height(const Eigen::Matrix<double, D - 1, 1>& x) const {
+  return Eigen::Map<const Eigen::Matrix<double, kTerms, 1>>(coefficients.data()).dot(monomials(x));
+}
+
+template <int D>
+Eigen::Matrix<double, D - 1, 1> HeightField<D>::slope(const Eigen::Matrix<double, D - 1, 1>& x) const {
+  const auto& c = coefficients;
+  Eigen::Matrix<double, D - 1, 1> g;
+  if constexpr (D == 2) {
+    g << c[1] + c[2] * x[0];
+  } else {
+    g << c[1] + c[3] * x[0] + c[4] * x[1], c[2] + c[4] * x[0] + c[5] * x[1];
+  }
+  return g;
+}
+
+template <int D>
+double HeightField<D>::largest_curvature() const {
+  const auto& c = coefficients;
+  if constexpr (D == 2) {
+    return std::abs(c[2]);
+  } else {
+    const Eigen::Matrix2d hessian = (Eigen::Matrix2d() << c[3], c[4], c[4], c[5]).finished();
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues().cwiseAbs().maxCoeff();
+  }
+}
+
+template struct HeightField<2>;
+template struct HeightField<3>;
+template Eigen::Matrix<double, 2, 2> tangent_frame<2>(const Vec<2>&);
+template Eigen::Matrix<double, 3, 3> tangent_frame<3>(const Vec<3>&);
+
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
   std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
@@ -76,18 +162,22 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   std::vector<Index> neighbours;
   data.query_k(p, k, neighbours, t);
   const long n = long(p.size());
-  std::vector<double> spacing(p.size()), noise(p.size());
+  std::vector<double> spacing(p.size()), noise(p.size()), curvature(p.size());
   s.normals.resize(p.size());
   s.gap.resize(p.size());
+  s.height_fields.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
   for (long i = 0; i < n; ++i) {
     const Index* nearest = &neighbours[std::size_t(i) * k];
     spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
     s.gap[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), 1);
     pca(p, nearest, k, noise[i], s.normals[i]);
+    s.height_fields[i] = fit_height_field(p, nearest, k, std::size_t(i), s.normals[i]);
+    curvature[i] = s.height_fields[i].largest_curvature();
   }
   s.spacing = neighbourhood_median(spacing, neighbours, k, t);
   s.noise = neighbourhood_median(noise, neighbours, k, t);
+  s.curvature = neighbourhood_median(curvature, neighbours, k, t);
   return s;
 }
 

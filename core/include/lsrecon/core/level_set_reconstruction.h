@@ -73,12 +73,12 @@ struct ReconstructionOptions {
   /// and the front may lie this far from the data between samples. A random surface sample's
   /// largest empty disc is about 1.45 s at 2e5 points (local_sampling.h); 2 leaves a margin.
   double gap_factor = 2.0;
-  /// Experimental, 0 (off) by default: span sampling holes up to this radius (unit box) as
-  /// Poisson does. The tagged start is closed at this radius (flood beyond it, grown back by
-  /// it), and the front moves at most this plus the gap below the start. Larger values also
-  /// fill concavities narrower than twice it. Measured on 4 holes of 4% of the diagonal at
-  /// 20k points with 0.06: sphere and torus close (Chamfer 1.4e-5, 2.5e-5 of the diagonal) but
-  /// a spurious part or handle remains; without it the front enters the holes (README.md).
+  /// 0 (off) by default: span sampling holes up to this radius (unit box), as Poisson does.
+  /// Each point's tangent disc of this radius (at most its radius of curvature), bent to the
+  /// quadric fitted to its neighbours, stops the tagged start and attracts the front beyond
+  /// the gap of the data (tangent_discs.h): the rims of a hole continue over it, while close
+  /// sheets and creases are left as the points say. Costs a radius query per mesh vertex near
+  /// the data (README.md has the measurements).
   double hole_radius = 0.0;
   double pin_factor = 2.0;  ///< radius (in local spacings) of the cell a reached point pins
   /// dt; 0: 0.2 / |alpha|. The front closes in on the data like exp(-alpha t), and the

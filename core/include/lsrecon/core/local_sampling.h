@@ -17,9 +17,26 @@
 
 #include "lsrecon/core/nearest_point_index.h"
 
+#include <array>
 #include <vector>
 
 namespace lsr {
+
+/// @brief Rows: D-1 unit tangents, then the normal; a fixed function of the normal.
+template <int D>
+Eigen::Matrix<double, D, D> tangent_frame(const Vec<D>& normal);
+
+/// @brief h(x) = c + g.x + x^T A x / 2 over the tangent coordinates x of a point's frame
+/// (tangent_frame of its normal, origin at the point), fitted to its neighbours.
+template <int D>
+struct HeightField {
+  static constexpr int kTerms = 1 + (D - 1) + D * (D - 1) / 2;
+  std::array<double, kTerms> coefficients{};  ///< c, g, then A's upper triangle (a, b, c: x^2/2, xy, y^2/2)
+  static Eigen::Matrix<double, kTerms, 1> monomials(const Eigen::Matrix<double, D - 1, 1>& x);
+  double height(const Eigen::Matrix<double, D - 1, 1>& x) const;
+  Eigen::Matrix<double, D - 1, 1> slope(const Eigen::Matrix<double, D - 1, 1>& x) const;  ///< grad h
+  double largest_curvature() const;  ///< largest |eigenvalue| of A
+};
 
 /// @brief Sampling scales per data point (all #N, lengths in the points' units).
 template <int D>
@@ -27,6 +44,12 @@ struct LocalSampling {
   std::vector<double> spacing;  ///< k-th distinct neighbour distance, median-filtered
   std::vector<double> noise;    ///< sqrt of the smallest PCA eigenvalue of the neighbourhood, median-filtered
   Points<D> normals;            ///< unit PCA normal of the neighbourhood, unoriented
+  /// quadric height field of the neighbourhood in the PCA frame (least squares, the point
+  /// itself included): where the surface goes beyond the neighbourhood, e.g. across a hole
+  std::vector<HeightField<D>> height_fields;
+  /// largest |principal curvature| of the height field, median-filtered (noise of deviation
+  /// sigma adds about 2 sigma / (2 s)^2)
+  std::vector<double> curvature;
   std::vector<double> gap;      ///< distance to the nearest distinct neighbour, raw (not filtered)
   static constexpr int kNeighbours = 16;  ///< neighbourhood size, the point itself included
   static constexpr int kSpacingRank = D == 2 ? 2 : 6;  ///< k of the spacing rule
