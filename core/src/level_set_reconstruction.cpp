@@ -431,7 +431,8 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
-                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, double trust_factor, bool volume, int threads) {
+                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
+                bool over_holes, bool volume, int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
@@ -450,6 +451,13 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
     const Index v = band_vertices[k];
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
     values[v] = trusted ? f[k] : u[v];
+    // Over a spanned hole the front lies on the rims' discs, where the fit only extrapolates:
+    // from the gap to one spacing beyond it the front takes over, gradually, so that the two
+    // zero sets join without a step (measured: switching opened small handles at holes).
+    if (over_holes) {
+      const double w = std::clamp((distance[v] - trust_factor * scale[v]) / scale[v], 0.0, 1.0);
+      values[v] = (1.0 - w) * values[v] + w * u[v];
+    }
   }
   r.surface = extract_closed_surface(mesh, values);
   r.normals = fit.project(r.surface.vertices, threads);
@@ -579,13 +587,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                           : std::numeric_limits<double>::infinity();
   if (o.hole_radius > 0.0) {
     // Spanned holes: the front is attracted to the points' tangent discs (tangent_discs.h),
-    // exact up to the start's gap plus a margin for its coarse edges over a hole. Within the
+    // wherever a hole's discs can reach and the start's gap (plus a margin) beyond. Within the
     // gap of the data the points themselves attract: there the discs add nothing over a hole,
     // and at a concave crease the tilted PCA planes of the points next to it span the groove
     // less than a gap from its tip (measured: a lid that stalled the double torus's front).
     std::vector<double> cap(nv);
-    for (std::size_t v = 0; v < nv; ++v) cap[v] = (2.0 * o.gap_factor + 1.0) * scale[v];
-    const std::vector<double> discs = tangent_disc_distance(data, sampling, disc_radii(o.hole_radius, sampling.curvature),
+    for (std::size_t v = 0; v < nv; ++v) cap[v] = (2.0 * o.gap_factor + 1.0) * scale[v] + o.hole_radius;
+    const std::vector<double> discs = tangent_disc_distance(data, sampling, o.hole_radius,
                                                             mesh.vertices, dist, cap, o.threads);
     for (std::size_t v = 0; v < nv; ++v) {
       d[v] = std::min(dist[v], discs[v] + std::max(0.0, o.gap_factor * scale[v] - dist[v]));
@@ -702,7 +710,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, o.gap_factor, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, o.hole_radius > 0.0, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

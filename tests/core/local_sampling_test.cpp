@@ -66,5 +66,23 @@ TEST(LocalSampling, NoiseOfAPlaneIsItsDeviation) {
   EXPECT_NEAR(median(s.noise), sigma, 0.2 * sigma);
 }
 
+TEST(LocalSampling, CurvatureOfRandomSphereSamplesConvergesLikeTheSquaredNeighbourhood) {
+  // A quadric fitted to h = x^2 / (2R) + |x|^4 / (8R^3) + ... over neighbours within r misses
+  // the quartic term: curvature error ~ r^2 / R^3, with pi rho r^2 = 16 (the neighbourhood).
+  const TestShape sphere = make_test_shape("sphere");  // R = 1
+  double previous = 0.0;
+  for (const int n : {2000, 20000}) {
+    const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(sample_test_shape(sphere, n).points));
+    std::vector<double> error;
+    for (double k : s.curvature) error.push_back(std::abs(k - 1.0));
+    const double r2 = 16.0 / (kPi * n / (4 * kPi));
+    EXPECT_LT(median(error), r2) << n;
+    if (previous > 0.0) {
+      EXPECT_LT(median(error), 0.5 * previous);  // n x10: r^2 / 10
+    }
+    previous = median(error);
+  }
+}
+
 }  // namespace
 }  // namespace lsr

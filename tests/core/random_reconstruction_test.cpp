@@ -145,6 +145,28 @@ TEST(RandomReconstruction, IsolatedOutliersAreLeftOutNotWrapped) {
   EXPECT_GT(analyze_surface(kept.surface.vertices, kept.surface.facets).genus.size(), 1u);
 }
 
+// Four unsampled caps of radius a = 0.2 (2.3 spacings of 4000 points, as 4% of the diagonal is
+// at 20k): without hole_radius the start floods in through them; with it the rims' discs span
+// them and the fit extrapolates the rim quadrics, whose error over a is the quartic term
+// a^4 / (8 R^3) of the tube (R = 0.4).
+TEST(RandomReconstruction, HolesAreSpannedWithTheHoleRadius) {
+  const TestShape shape = make_test_shape("torus");
+  SamplingVariant v;
+  v.holes = 4;
+  v.hole_radius = 0.2 / 4.04;  // of the diagonal, 2 sqrt(1.4^2 + 1.4^2 + 0.4^2)
+  const SampledShape sample = sample_test_shape(shape, 4000, v);
+  const Outcome open = run(shape, sample);
+  EXPECT_FALSE(open.topology.watertight && open.genus == std::vector<int>{1});
+  ReconstructionOptions o;
+  o.hole_radius = 1.5 * 0.2 * 0.4 / 1.4;  // 1.5 a in the unit box (bounding ball 0.4 for 1.4)
+  const Outcome spanned = run(shape, sample, o);
+  EXPECT_EQ(spanned.r.status, ReconstructionStatus::converged);
+  EXPECT_TRUE(spanned.topology.watertight);
+  EXPECT_EQ(spanned.genus, std::vector<int>{1});
+  const double a = 0.2, R = 0.4;
+  EXPECT_LE(spanned.distances.hausdorff, fit_bound(4000, 4 * kPi * kPi * 0.4, R) + std::pow(a, 4) / (8 * R * R * R));
+}
+
 TEST(RandomReconstruction, NoisySphereIsSmootherThanItsNoise) {
   // sigma = 0.5% of the diagonal per coordinate: the data lie sigma from the sphere on
   // average (sqrt(2 / pi) sigma in the normal direction); the fit averages 30-120 of them.

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file tangent_discs_test.cpp
+/// @brief The discs span a hole, follow a curved surface across it, and leave the gap between
+/// two close sheets open.
+#include "lsrecon/core/tangent_discs.h"
+#include "lsrecon/core/shape_corpus.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace lsr {
+namespace {
+
+// Random points of the square [0.2, 0.8]^2 at height z, without the disc of radius a at
+// (0.5, 0.5).
+Points<3> holey_plane(double z, double a, int n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.2, 0.8);
+  Points<3> p;
+  while (int(p.size()) < n) {
+    const Vec<3> x(u(rng), u(rng), z);
+    if (std::hypot(x.x() - 0.5, x.y() - 0.5) > a) p.push_back(x);
+  }
+  return p;
+}
+
+std::vector<double> distances(const NearestPointIndex<3>& data, const Points<3>& queries) {
+  std::vector<double> d;
+  data.query(queries, d);
+  return d;
+}
+
+TEST(TangentDiscs, SpanAHoleNarrowerThanTheirRadiusAndNoWider) {
+  const double a = 0.05;  // about 3 spacings of 4000 points on 0.36
+  const NearestPointIndex<3> data(holey_plane(0.5, a, 4000, 1));
+  const LocalSampling<3> s = estimate_local_sampling(data);
+  const Points<3> q = {Vec<3>(0.5, 0.5, 0.5), Vec<3>(0.5, 0.5, 0.51), Vec<3>(0.52, 0.49, 0.48)};
+  const std::vector<double> d = distances(data, q);
+  const std::vector<double> cap(q.size(), 1.0);
+  for (std::size_t i = 0; i < q.size(); ++i) ASSERT_GT(d[i], 0.5 * a) << i;  // the hole is empty
+  // Radius 1.5 a: the rim's discs cover the hole; a plane is fitted exactly (to rounding).
+  const std::vector<double> covered = tangent_disc_distance(data, s, 1.5 * a, q, d, cap);
+  for (std::size_t i = 0; i < q.size(); ++i) EXPECT_NEAR(covered[i], std::abs(q[i].z() - 0.5), 1e-9) << i;
+  // Radius a / 2: the hole's middle stays at least a / 2 from every disc.
+  const std::vector<double> open = tangent_disc_distance(data, s, 0.5 * a, q, d, cap);
+  EXPECT_GE(open[0], 0.5 * a - 0.02 * a);
+}
+
+TEST(TangentDiscs, FollowTheCurvatureAcrossAHole) {
+  // A cap of angular radius 0.15 missing from a random unit sphere: flat discs of radius 0.2
+  // would pass 0.15^2 / 2 ~ 0.011 above its pole; bent ones by the quartic term only.
+  const TestShape sphere = make_test_shape("sphere");
+  Points<3> p;
+  for (const Vec<3>& x : sample_test_shape(sphere, 20000).points) {
+    if (std::acos(std::clamp(x.z(), -1.0, 1.0)) > 0.15) p.push_back(x);
+  }
+  const NearestPointIndex<3> data(p);
+  const LocalSampling<3> s = estimate_local_sampling(data);
+  const Points<3> pole = {Vec<3>(0.0, 0.0, 1.0)};
+  const std::vector<double> d = distances(data, pole);
+  ASSERT_GT(d[0], 0.14);
+  const std::vector<double> bent = tangent_disc_distance(data, s, 0.2, pole, d, {1.0});
+  // The quadric of a rim point extrapolated 0.15: h error ~ x^4 / (8 R^3) = 6e-5, plus its fit error.
+  EXPECT_LT(bent[0], 2e-3);
+}
+
+TEST(TangentDiscs, LeaveTheGapBetweenCloseSheetsOpen) {
+  // Two parallel sheets 0.03 apart, farther than a neighbourhood's radius (16 of 3000 points on
+  // 0.36: 0.025), so that each point's height field is its own sheet's: however large the
+  // discs, the middle stays 0.015 from both.
+  Points<3> p = holey_plane(0.5, 0.0, 3000, 2);
+  const Points<3> upper = holey_plane(0.53, 0.0, 3000, 3);
+  p.insert(p.end(), upper.begin(), upper.end());
+  const NearestPointIndex<3> data(p);
+  const LocalSampling<3> s = estimate_local_sampling(data);
+  const Points<3> middle = {Vec<3>(0.5, 0.5, 0.515), Vec<3>(0.3, 0.6, 0.515)};
+  const std::vector<double> d = distances(data, middle);
+  const std::vector<double> discs = tangent_disc_distance(data, s, 0.2, middle, d, {1.0, 1.0});
+  for (std::size_t i = 0; i < middle.size(); ++i) EXPECT_NEAR(discs[i], 0.015, 1e-6) << i;
+}
+
+TEST(TangentDiscs, ShapeStopsAtTheRadiusOfCurvatureAlongEachPrincipalDirection) {
+  // A cylinder of radius 0.05 along (1, 1) / sqrt 2: h = -(x . e)^2 / (2 0.05) across the axis e.
+  HeightField<3> f;
+  const Eigen::Vector2d axis = Eigen::Vector2d(1.0, 1.0).normalized(), across(-axis.y(), axis.x());
+  const Eigen::Matrix2d a = -20.0 * across * across.transpose();
+  f.coefficients = {0.0, 0.0, 0.0, a(0, 0), a(0, 1), a(1, 1)};
+  const Eigen::Matrix2d s = disc_shape(f, 0.1);
+  EXPECT_NEAR((s * axis).norm(), 1.0 / 0.1, 1e-9);     // flat: the full radius
+  EXPECT_NEAR((s * across).norm(), 1.0 / 0.05, 1e-9);  // round: the radius of curvature
+  HeightField<2> flat;
+  EXPECT_NEAR(disc_shape(flat, 0.1)(0, 0), 10.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace lsr
