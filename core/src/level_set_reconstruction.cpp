@@ -486,14 +486,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("unit box");
 
   progress.update("sampling", -1.0);
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads);
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads, o.hole_radius > 0.0);
   if (drop_isolated(sampling, o.outlier_factor, points, kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - points.size();
     require_spanning(points);
     box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(points));
-    sampling = estimate_local_sampling(data, o.threads);
+    sampling = estimate_local_sampling(data, o.threads, o.hole_radius > 0.0);
   }
   r.noise = median(sampling.noise);
   r.spacing = median(sampling.spacing);

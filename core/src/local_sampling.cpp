@@ -154,7 +154,7 @@ double median(std::vector<double> values) {
 }
 
 template <int D>
-LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads) {
+LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, bool height_fields) {
   constexpr int k = LocalSampling<D>::kNeighbours;
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
@@ -165,23 +165,25 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   std::vector<double> spacing(p.size()), noise(p.size()), curvature(p.size());
   s.normals.resize(p.size());
   s.gap.resize(p.size());
-  s.height_fields.resize(p.size());
+  if (height_fields) s.height_fields.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
   for (long i = 0; i < n; ++i) {
     const Index* nearest = &neighbours[std::size_t(i) * k];
     spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
     s.gap[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), 1);
     pca(p, nearest, k, noise[i], s.normals[i]);
-    s.height_fields[i] = fit_height_field(p, nearest, k, std::size_t(i), s.normals[i]);
-    curvature[i] = s.height_fields[i].largest_curvature();
+    if (height_fields) {
+      s.height_fields[i] = fit_height_field(p, nearest, k, std::size_t(i), s.normals[i]);
+      curvature[i] = s.height_fields[i].largest_curvature();
+    }
   }
   s.spacing = neighbourhood_median(spacing, neighbours, k, t);
   s.noise = neighbourhood_median(noise, neighbours, k, t);
-  s.curvature = neighbourhood_median(curvature, neighbours, k, t);
+  if (height_fields) s.curvature = neighbourhood_median(curvature, neighbours, k, t);
   return s;
 }
 
-template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int);
-template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int);
+template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, bool);
+template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, bool);
 
 }  // namespace lsr

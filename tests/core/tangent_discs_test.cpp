@@ -35,7 +35,7 @@ std::vector<double> distances(const NearestPointIndex<3>& data, const Points<3>&
 TEST(TangentDiscs, SpanAHoleNarrowerThanTheirRadiusAndNoWider) {
   const double a = 0.05;  // about 3 spacings of 4000 points on 0.36
   const NearestPointIndex<3> data(holey_plane(0.5, a, 4000, 1));
-  const LocalSampling<3> s = estimate_local_sampling(data);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
   const Points<3> q = {Vec<3>(0.5, 0.5, 0.5), Vec<3>(0.5, 0.5, 0.51), Vec<3>(0.52, 0.49, 0.48)};
   const std::vector<double> d = distances(data, q);
   const std::vector<double> cap(q.size(), 1.0);
@@ -57,7 +57,7 @@ TEST(TangentDiscs, FollowTheCurvatureAcrossAHole) {
     if (std::acos(std::clamp(x.z(), -1.0, 1.0)) > 0.15) p.push_back(x);
   }
   const NearestPointIndex<3> data(p);
-  const LocalSampling<3> s = estimate_local_sampling(data);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
   const Points<3> pole = {Vec<3>(0.0, 0.0, 1.0)};
   const std::vector<double> d = distances(data, pole);
   ASSERT_GT(d[0], 0.14);
@@ -74,7 +74,7 @@ TEST(TangentDiscs, LeaveTheGapBetweenCloseSheetsOpen) {
   const Points<3> upper = holey_plane(0.53, 0.0, 3000, 3);
   p.insert(p.end(), upper.begin(), upper.end());
   const NearestPointIndex<3> data(p);
-  const LocalSampling<3> s = estimate_local_sampling(data);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
   const Points<3> middle = {Vec<3>(0.5, 0.5, 0.515), Vec<3>(0.3, 0.6, 0.515)};
   const std::vector<double> d = distances(data, middle);
   const std::vector<double> discs = tangent_disc_distance(data, s, 0.2, middle, d, {1.0, 1.0});
