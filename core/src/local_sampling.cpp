@@ -162,7 +162,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   std::vector<Index> neighbours;
   data.query_k(p, k, neighbours, t);
   const long n = long(p.size());
-  std::vector<double> spacing(p.size()), noise(p.size()), curvature(p.size());
+  std::vector<double> spacing(p.size()), noise(p.size());
   s.normals.resize(p.size());
   s.gap.resize(p.size());
   if (height_fields) s.height_fields.resize(p.size());
@@ -172,14 +172,10 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
     spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
     s.gap[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), 1);
     pca(p, nearest, k, noise[i], s.normals[i]);
-    if (height_fields) {
-      s.height_fields[i] = fit_height_field(p, nearest, k, std::size_t(i), s.normals[i]);
-      curvature[i] = s.height_fields[i].largest_curvature();
-    }
+    if (height_fields) s.height_fields[i] = fit_height_field(p, nearest, k, std::size_t(i), s.normals[i]);
   }
   s.spacing = neighbourhood_median(spacing, neighbours, k, t);
   s.noise = neighbourhood_median(noise, neighbours, k, t);
-  if (height_fields) s.curvature = neighbourhood_median(curvature, neighbours, k, t);
   return s;
 }
 

@@ -35,7 +35,9 @@ struct HeightField {
   static Eigen::Matrix<double, kTerms, 1> monomials(const Eigen::Matrix<double, D - 1, 1>& x);
   double height(const Eigen::Matrix<double, D - 1, 1>& x) const;
   Eigen::Matrix<double, D - 1, 1> slope(const Eigen::Matrix<double, D - 1, 1>& x) const;  ///< grad h
-  double largest_curvature() const;  ///< largest |eigenvalue| of A
+  /// largest |eigenvalue| of A (noise of deviation sigma adds about 2 sigma / r^2 over a
+  /// neighbourhood of radius r)
+  double largest_curvature() const;
 };
 
 /// @brief Sampling scales per data point (all #N, lengths in the points' units).
@@ -46,11 +48,8 @@ struct LocalSampling {
   Points<D> normals;            ///< unit PCA normal of the neighbourhood, unoriented
   /// quadric height field of the neighbourhood in the PCA frame (least squares, the point
   /// itself included): where the surface goes beyond the neighbourhood, e.g. across a hole.
-  /// Empty unless asked for, as is curvature.
+  /// Empty unless asked for.
   std::vector<HeightField<D>> height_fields;
-  /// largest |principal curvature| of the height field, median-filtered (noise of deviation
-  /// sigma adds about 2 sigma / (2 s)^2)
-  std::vector<double> curvature;
   std::vector<double> gap;      ///< distance to the nearest distinct neighbour, raw (not filtered)
   static constexpr int kNeighbours = 16;  ///< neighbourhood size, the point itself included
   static constexpr int kSpacingRank = D == 2 ? 2 : 6;  ///< k of the spacing rule
@@ -59,7 +58,7 @@ struct LocalSampling {
 /// @brief Estimates the sampling scales of every point of the index. Exact duplicates are skipped
 /// when ranking neighbours. Deterministic for any thread count.
 /// @param threads 0 for all cores
-/// @param height_fields also fit height_fields and curvature (only spanning holes needs them;
+/// @param height_fields also fit height_fields (only spanning holes needs them;
 /// they took 0.24 s of the 0.54 s of the sampling stage on a 200k-point torus)
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads = 0, bool height_fields = false);
