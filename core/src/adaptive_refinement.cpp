@@ -5,6 +5,8 @@
 #include "lsrecon/core/adaptive_refinement.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <string>
 #include <unordered_set>
@@ -183,31 +185,73 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   return out;
 }
 
+namespace {
+
+// Interleaves the bits of the coordinates quantised to 64 / D bits each (unit box).
+template <int D>
+std::uint64_t morton_key(const Vec<D>& x) {
+  constexpr int bits = 64 / D;
+  const double cells = std::ldexp(1.0, bits) - 1.0;
+  std::array<std::uint64_t, D> q{};
+  for (int d = 0; d < D; ++d) q[d] = std::uint64_t(std::clamp(x[d], 0.0, 1.0) * cells);
+  std::uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; --b) {
+    for (int d = 0; d < D; ++d) key = (key << 1) | ((q[d] >> b) & 1u);
+  }
+  return key;
+}
+
+// New index of each forest vertex: its rank in Z-order (ties, impossible for distinct
+// vertices at 64 / D bits, by index).
+template <int D>
+std::vector<Index> z_order(const Points<D>& vertices) {
+  std::vector<std::pair<std::uint64_t, Index>> keys(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i) keys[i] = {morton_key<D>(vertices[i]), Index(i)};
+  std::sort(keys.begin(), keys.end());
+  std::vector<Index> rank(vertices.size());
+  for (std::size_t r = 0; r < keys.size(); ++r) rank[std::size_t(keys[r].second)] = Index(r);
+  return rank;
+}
+
+}  // namespace
+
 template <int D>
 AdaptiveMesh<D> leaf_mesh(KuhnBisectionForest<D> refined) {
   AdaptiveMesh<D> out;
   out.forest = std::move(refined);
   auto& forest = out.forest;
   forest.finish_refinement();
-  out.mesh.vertices = forest.vertices();
+  const std::vector<Index> rank = z_order<D>(forest.vertices());
+  out.mesh.vertices.resize(rank.size());
+  for (std::size_t i = 0; i < rank.size(); ++i) out.mesh.vertices[std::size_t(rank[i])] = forest.vertices()[i];
+  out.vertex_of_node_vertex = rank;
   const auto& nodes = forest.simplices();
-  out.simplex_of_node.assign(nodes.size(), -1);
-  out.mesh.simplices.reserve(forest.leaf_count());
+  // Leaves bucketed by their smallest new vertex index (a counting sort: stable, linear).
+  std::vector<Index> first(rank.size() + 1, 0);
   double finest = 1.0;
   for (Index s = 0; s < Index(nodes.size()); ++s) {
     if (!forest.is_leaf(s)) continue;
-    out.simplex_of_node[s] = Index(out.mesh.simplices.size());
-    out.mesh.simplices.push_back(nodes[s].v);
-    if (signed_measure(out.mesh, out.simplex_of_node[s]) < 0.0) {
-      std::swap(out.mesh.simplices.back()[D - 1], out.mesh.simplices.back()[D]);
-    }
+    Index lowest = rank[std::size_t(nodes[s].v[0])];
+    for (Index v : nodes[s].v) lowest = std::min(lowest, rank[std::size_t(v)]);
+    ++first[std::size_t(lowest) + 1];
     finest = std::min(finest, forest.size(s));
+  }
+  for (std::size_t i = 1; i < first.size(); ++i) first[i] += first[i - 1];
+  out.simplex_of_node.assign(nodes.size(), -1);
+  out.mesh.simplices.resize(std::size_t(forest.leaf_count()));
+  for (Index s = 0; s < Index(nodes.size()); ++s) {
+    if (!forest.is_leaf(s)) continue;
+    std::array<Index, D + 1> v{};
+    for (int k = 0; k <= D; ++k) v[k] = rank[std::size_t(nodes[s].v[k])];
+    const Index at = first[std::size_t(*std::min_element(v.begin(), v.end()))]++;
+    out.simplex_of_node[s] = at;
+    out.mesh.simplices[std::size_t(at)] = v;
+    if (signed_measure(out.mesh, at) < 0.0) std::swap(out.mesh.simplices[std::size_t(at)][D - 1], out.mesh.simplices[std::size_t(at)][D]);
   }
   out.stats.finest_size = finest;
   out.stats.uniform_vertices = Index(std::pow(std::round(1.0 / finest) + 1.0, D));
   return out;
 }
-
 
 template AdaptiveMesh<2> leaf_mesh<2>(KuhnBisectionForest<2>);
 template AdaptiveMesh<3> leaf_mesh<3>(KuhnBisectionForest<3>);

@@ -315,7 +315,7 @@ double median_on_data(const std::vector<Location<D>>& at, const Eigen::VectorXd&
 template <int D>
 Eigen::VectorXd two_sided_drive(const P1Operators<D>& ops, const Eigen::VectorXd& d, const Points<D>& away,
                                 const Eigen::VectorXd& u) {
-  const Eigen::VectorXd g = ops.gradient * u;
+  const Eigen::VectorXd g = ops.gradient_times(u);
   Eigen::VectorXd drive(d.size());
   for (Eigen::Index v = 0; v < d.size(); ++v) {
     const Vec<D> gv = g.template segment<D>(D * v);
@@ -403,7 +403,7 @@ void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const 
   for (double& v : values) v -= level;
   r.surface = extract_closed_surface(mesh, values);
   attach_volume(r, mesh, values, volume);
-  const Eigen::VectorXd g = ops.gradient * u;
+  const Eigen::VectorXd g = ops.gradient_times(u);
   r.normals.resize(r.surface.vertices.size());
   for (std::size_t i = 0; i < r.surface.vertices.size(); ++i) {
     const EdgePoint& e = r.surface.sources[i];
@@ -536,6 +536,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // Point location was the last use of the bisection forest: a third of the peak at 200k.
     const KuhnBisectionForest<D> forest = std::move(adaptive.forest);
     const std::vector<Index> nodes = std::move(adaptive.simplex_of_node);
+    const std::vector<Index> renumbered = std::move(adaptive.vertex_of_node_vertex);
   }
   clock.end("distance");
 
@@ -701,7 +702,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.residual = best_residual * median_eps / box.scale();
   r.noise /= box.scale();
   r.spacing /= box.scale();
-  const Points<D> normals = oriented_normals(sampling, at, Eigen::VectorXd(ops.gradient * best));
+  const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
   r.point_normals.assign(input.size(), Vec<D>::Constant(std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t i = 0; i < kept.size(); ++i) r.point_normals[kept[i]] = normals[i];
   progress.update(o.fit_surface ? "fit" : "extract", -1.0);

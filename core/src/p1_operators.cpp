@@ -19,45 +19,36 @@ std::array<Vec<D>, D + 1> gradients_of(const SimplexMesh<D>& mesh, const Simplex
 }
 
 // Row block i of G gathers |K| grad w_{K,j} / |B_i| over the simplices K of the ball of i and
-// their vertices j, at (D i + k, j): its columns are i and its neighbours, the same for the D
-// rows of the block. Written straight into compressed storage, one vertex per task: no triplet
-// list (1.4 GB at 209k vertices, measured) and no serial pass.
+// their vertices j: its columns are i and its neighbours. Written straight into its storage, one
+// vertex per task: no triplet list (1.4 GB at 209k vertices, measured) and no serial pass.
 template <int D>
 void assemble_gradient(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g, const VertexNeighbours& n,
-                       int threads, SparseRowMatrix& gradient) {
+                       int threads, P1Operators<D>& ops) {
   const Index nv = Index(mesh.vertices.size());
-  gradient.resize(D * nv, nv);
-  auto row_size = [&](Index i) { return n.offsets[i + 1] - n.offsets[i] + 1; };
-  auto* outer = gradient.outerIndexPtr();
-  outer[0] = 0;
-  for (Index i = 0; i < nv; ++i) {
-    for (int k = 0; k < D; ++k) outer[D * i + k + 1] = outer[D * i + k] + row_size(i);
-  }
-  gradient.resizeNonZeros(outer[D * nv]);
-  auto* columns = gradient.innerIndexPtr();
-  double* values = gradient.valuePtr();
+  ops.offsets.resize(std::size_t(nv) + 1);
+  ops.offsets[0] = 0;
+  for (Index i = 0; i < nv; ++i) ops.offsets[i + 1] = ops.offsets[i] + n.offsets[i + 1] - n.offsets[i] + 1;
+  ops.columns.resize(std::size_t(ops.offsets[nv]));
+  ops.values.assign(D * ops.columns.size(), 0.0);
 #pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
   for (Index i = 0; i < nv; ++i) {
     // Columns: the sorted neighbours with i merged in.
     const Index* first = n.neighbours.data() + n.offsets[i];
     const Index* last = n.neighbours.data() + n.offsets[i + 1];
-    Index* cols = columns + outer[D * i];
+    Index* cols = ops.columns.data() + ops.offsets[i];
     const Index* split = std::lower_bound(first, last, i);
     std::copy(first, split, cols);
     cols[split - first] = i;
     std::copy(split, last, cols + (split - first) + 1);
-    const Index size = row_size(i);
-    for (int k = 0; k < D; ++k) {
-      std::copy_n(cols, size, columns + outer[D * i + k]);
-      std::fill_n(values + outer[D * i + k], size, 0.0);
-    }
+    const Index size = ops.offsets[i + 1] - ops.offsets[i];
+    double* values = ops.values.data() + D * std::size_t(ops.offsets[i]);
     for (Index b = g.ball_offsets[i]; b < g.ball_offsets[i + 1]; ++b) {
       const Index s = g.ball_simplices[b];
       const double w = g.measure[s] / g.ball_measure[i];
       const std::array<Vec<D>, D + 1> grad = gradients_of(mesh, g, s);
       for (int j = 0; j <= D; ++j) {
         const Index at = Index(std::lower_bound(cols, cols + size, mesh.simplices[s][j]) - cols);
-        for (int k = 0; k < D; ++k) values[outer[D * i + k] + at] += w * grad[j][k];
+        for (int k = 0; k < D; ++k) values[D * at + k] += w * grad[j][k];
       }
     }
   }
@@ -97,44 +88,34 @@ Eigen::VectorXd norms_per_vertex(const Eigen::VectorXd& field) {
 
 int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
-// Where G(D i, j) sits in G's values for each entry (j, i) of the block pattern, found by
-// binary search in row D i (the block pattern of G is symmetric: i is in row block j's columns
-// exactly when j is in row block i's).
+// The transposed entry of each entry, found by binary search (the block pattern of G is
+// symmetric: i is in row block j's columns exactly when j is in row block i's).
 template <int D>
-std::vector<Index> transpose_index(const SparseRowMatrix& gradient, int threads) {
-  const Index nv = Index(gradient.cols());
-  const auto* outer = gradient.outerIndexPtr();
-  const auto* cols = gradient.innerIndexPtr();
-  std::vector<Index> index(std::size_t(outer[D * nv] / D));
+std::vector<Index> transposed_entries(const P1Operators<D>& ops, int threads) {
+  const Index nv = Index(ops.offsets.size()) - 1;
+  std::vector<Index> transposed(ops.columns.size());
 #pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
   for (Index j = 0; j < nv; ++j) {
-    const Index first = outer[D * j], size = outer[D * j + 1] - first;
-    for (Index e = 0; e < size; ++e) {
-      const Index i = cols[first + e];
-      const Index* row = cols + outer[D * i];
-      index[std::size_t(first / D + e)] = outer[D * i] + Index(std::lower_bound(row, cols + outer[D * i + 1], j) - row);
+    for (Index e = ops.offsets[j]; e < ops.offsets[j + 1]; ++e) {
+      const Index* row = ops.columns.data() + ops.offsets[ops.columns[e]];
+      const Index* end = ops.columns.data() + ops.offsets[ops.columns[e] + 1];
+      transposed[e] = Index(std::lower_bound(row, end, j) - ops.columns.data());
     }
   }
-  return index;
+  return transposed;
 }
 
-// sum over the entries (j, i) of f(D i + k, G(D i + k, j)), for every j.
+// sum over the entries e of row block j of f(i, the D values of the transposed entry (i, j)),
+// for every j.
 template <int D, class F>
-Eigen::VectorXd gather_columns(const SparseRowMatrix& gradient, const std::vector<Index>& index, F f) {
-  const Index nv = Index(gradient.cols());
-  const auto* outer = gradient.outerIndexPtr();
-  const auto* cols = gradient.innerIndexPtr();
-  const double* values = gradient.valuePtr();
+Eigen::VectorXd gather_columns(const P1Operators<D>& ops, F f) {
+  const Index nv = Index(ops.offsets.size()) - 1;
   Eigen::VectorXd out(nv);
 #pragma omp parallel for schedule(static)
   for (Index j = 0; j < nv; ++j) {
-    const Index first = outer[D * j], size = outer[D * j + 1] - first;
     double sum = 0.0;
-    for (Index e = 0; e < size; ++e) {
-      const Index i = cols[first + e];
-      const Index at = index[std::size_t(first / D + e)];
-      const Index stride = outer[D * i + 1] - outer[D * i];
-      for (int k = 0; k < D; ++k) sum += f(D * i + k, values[at + k * stride]);
+    for (Index e = ops.offsets[j]; e < ops.offsets[j + 1]; ++e) {
+      sum += f(ops.columns[e], ops.values.data() + D * std::size_t(ops.transposed[e]));
     }
     out[j] = sum;
   }
@@ -149,8 +130,8 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
   threads = thread_count(threads);
   P1Operators<D> ops;
   // Filled in place: a copy of each would touch another 0.6 GB per million vertices.
-  assemble_gradient(mesh, g, neighbours ? *neighbours : vertex_neighbours(mesh, threads), threads, ops.gradient);
-  ops.transpose_index = transpose_index<D>(ops.gradient, threads);
+  assemble_gradient(mesh, g, neighbours ? *neighbours : vertex_neighbours(mesh, threads), threads, ops);
+  ops.transposed = transposed_entries(ops, threads);
   if (with_divergence) ops.divergence = assemble_divergence(mesh, g);
   ops.ball_measure = Eigen::Map<const Eigen::VectorXd>(g.ball_measure.data(), Eigen::Index(g.ball_measure.size()));
   ops.on_boundary.resize(mesh.vertices.size());
@@ -162,24 +143,62 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
 }
 
 template <int D>
+Eigen::VectorXd P1Operators<D>::gradient_times(const Eigen::VectorXd& u) const {
+  const Index nv = Index(offsets.size()) - 1;
+  Eigen::VectorXd out(D * nv);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < nv; ++i) {
+    Vec<D> sum = Vec<D>::Zero();
+    for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
+      sum += u[columns[e]] * Eigen::Map<const Vec<D>>(values.data() + D * std::size_t(e));
+    }
+    out.template segment<D>(D * i) = sum;
+  }
+  return out;
+}
+
+template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_transpose_times(const Eigen::VectorXd& y) const {
-  return gather_columns<D>(gradient, transpose_index, [&y](Index row, double g) { return g * y[row]; });
+  return gather_columns<D>(*this, [&y](Index i, const double* g) {
+    double s = 0.0;
+    for (int k = 0; k < D; ++k) s += g[k] * y[D * i + k];
+    return s;
+  });
 }
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::weighted_column_squares(const Eigen::VectorXd& w) const {
-  return gather_columns<D>(gradient, transpose_index, [&w](Index row, double g) { return w[row] * g * g; });
+  return gather_columns<D>(*this, [&w](Index i, const double* g) {
+    double s = 0.0;
+    for (int k = 0; k < D; ++k) s += w[D * i + k] * g[k] * g[k];
+    return s;
+  });
+}
+
+template <int D>
+SparseRowMatrix P1Operators<D>::gradient_matrix() const {
+  const Index nv = Index(offsets.size()) - 1;
+  std::vector<Eigen::Triplet<double, Index>> entries;
+  entries.reserve(values.size());
+  for (Index i = 0; i < nv; ++i) {
+    for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
+      for (int k = 0; k < D; ++k) entries.emplace_back(D * i + k, columns[e], values[D * std::size_t(e) + k]);
+    }
+  }
+  SparseRowMatrix g(D * nv, nv);
+  g.setFromTriplets(entries.begin(), entries.end());
+  return g;
 }
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_norms(const Eigen::VectorXd& u) const {
-  return norms_per_vertex<D>(gradient * u);
+  return norms_per_vertex<D>(gradient_times(u));
 }
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::curvature(const Eigen::VectorXd& u, double eps_a) const {
   if (divergence.rows() == 0) throw std::logic_error("curvature() needs operators assembled with_divergence");
-  Eigen::VectorXd q = gradient * u;
+  Eigen::VectorXd q = gradient_times(u);
   const Eigen::VectorXd a = norms_per_vertex<D>(q).cwiseMax(eps_a);
   for (Eigen::Index i = 0; i < a.size(); ++i) q.template segment<D>(D * i) /= a[i];
   return divergence * q;
@@ -197,7 +216,7 @@ SymmetricCurvatureOperator<D>::SymmetricCurvatureOperator(const P1Operators<D>& 
 
 template <int D>
 Eigen::VectorXd SymmetricCurvatureOperator<D>::apply(const Eigen::VectorXd& v) const {
-  return ops_.gradient_transpose_times(weights_.cwiseProduct(ops_.gradient * v));
+  return ops_.gradient_transpose_times(weights_.cwiseProduct(ops_.gradient_times(v)));
 }
 
 template <int D>

@@ -56,7 +56,7 @@ Location<D> locate(const AdaptiveMesh<D>& mesh, const Vec<D>& p, double toleranc
     }
   }
   at.simplex = mesh.simplex_of_node[s];
-  at.vertices = nodes[s].v;
+  for (int k = 0; k <= D; ++k) at.vertices[k] = mesh.vertex_of_node_vertex[std::size_t(nodes[s].v[k])];
   at.weights = w;
   return at;
 }

@@ -70,7 +70,7 @@ Eigen::VectorXd step_gmres(const P1Operators<D>& ops, const Eigen::VectorXd& d,
   // M = Div A^-1 G, literally (eq. 14).
   Eigen::VectorXd inverse_a(D * a.size());
   for (Eigen::Index j = 0; j < a.size(); ++j) inverse_a.template segment<D>(D * j).setConstant(1.0 / a[j]);
-  const SparseRowMatrix m = ops.divergence * inverse_a.asDiagonal() * ops.gradient;
+  const SparseRowMatrix m = ops.divergence * inverse_a.asDiagonal() * ops.gradient_matrix();
   // Rows scaled by -dt beta a_i; wall rows by 0, so that they become identity rows below.
   Eigen::VectorXd row_scale = -p.time_step * p.curvature_weight * a;
   if (p.curvature_weights.size() > 0) row_scale = -p.time_step * p.curvature_weights.cwiseProduct(a);

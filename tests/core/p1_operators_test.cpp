@@ -39,13 +39,13 @@ template <int D>
 void check_linear_gradient_is_exact(const Fixture<D>& f) {
   const Vec<D> a = Vec<D>::LinSpaced(-0.4, 1.1);
   const Eigen::VectorXd u = nodal<D>(f.mesh.mesh, [&](const Vec<D>& x) { return a.dot(x) - 0.3; });
-  const Eigen::VectorXd g = f.ops.gradient * u;
+  const Eigen::VectorXd g = f.ops.gradient_times(u);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     EXPECT_LE((g.template segment<D>(D * i) - a).norm(), 1e-11) << "vertex " << i;
   }
   // Constants are in the kernel of G and of the curvature operator.
   const Eigen::VectorXd one = Eigen::VectorXd::Ones(u.size());
-  EXPECT_LE((f.ops.gradient * one).cwiseAbs().maxCoeff(), 1e-11);
+  EXPECT_LE((f.ops.gradient_times(one)).cwiseAbs().maxCoeff(), 1e-11);
 }
 
 template <int D>
@@ -75,14 +75,19 @@ TEST(P1Operators, GradientOfLinearFunctionsIsExact) {
   check_linear_gradient_is_exact(fixture<3>(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(4000), 1.0 / 32));
 }
 
-// G^T y gathered from G's values equals Eigen's transpose product, and the same with squares.
+// The block products equal Eigen's products with G as a sparse matrix: G u, G^T y gathered
+// through the transposed entries, and the same with squares.
 template <int D>
 void check_transpose_gather(const Fixture<D>& f) {
-  const Eigen::Index n = f.ops.gradient.rows();
+  const SparseRowMatrix g = f.ops.gradient_matrix();
+  const Eigen::Index n = g.rows();
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(g.cols(), 0.3, -2.0).array().cos();
+  const Eigen::VectorXd gu = g * u;
+  EXPECT_LE((f.ops.gradient_times(u) - gu).cwiseAbs().maxCoeff(), 1e-12 * gu.cwiseAbs().maxCoeff());
   const Eigen::VectorXd y = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
   const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(n, 0.5, 3.0);
-  const Eigen::VectorXd expected = f.ops.gradient.transpose() * y;
-  const Eigen::VectorXd squares = f.ops.gradient.cwiseProduct(f.ops.gradient).transpose() * w;
+  const Eigen::VectorXd expected = g.transpose() * y;
+  const Eigen::VectorXd squares = g.cwiseProduct(g).transpose() * w;
   EXPECT_LE((f.ops.gradient_transpose_times(y) - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
   EXPECT_LE((f.ops.weighted_column_squares(w) - squares).cwiseAbs().maxCoeff(), 1e-12 * squares.cwiseAbs().maxCoeff());
 }

@@ -54,12 +54,15 @@ struct AdaptiveMeshStats {
 };
 
 /// @brief The adaptive mesh: the leaves of the bisection forest as a positively oriented
-/// SimplexMesh, plus the forest for point location.
+/// SimplexMesh, plus the forest for point location. The mesh's vertices are numbered along a
+/// Z-order curve and its simplices by their first vertex in that order, so that neighbours in
+/// space are near in memory (the forest creates them level by level, scattered over the box).
 template <int D>
 struct AdaptiveMesh {
   KuhnBisectionForest<D> forest{1};
   SimplexMesh<D> mesh;
   std::vector<Index> simplex_of_node;  ///< forest node -> mesh simplex, -1 for inner nodes
+  std::vector<Index> vertex_of_node_vertex;  ///< forest vertex -> mesh vertex
   AdaptiveMeshStats stats;
 };
 

@@ -20,19 +20,25 @@ using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, Index>;
 /// @brief The operators of one fixed mesh, assembled once.
 ///
 /// Nodal vector fields are stored as one vector of D * #V entries, component k of vertex i at
-/// D * i + k. G is assembled (in parallel, straight into compressed storage): products with it
-/// ran 4.6x faster than matrix-free gathers over the simplices (measured, 537k vertices), whose
-/// per-simplex reads are scattered. G^T is not stored (it doubled the operators' memory, a
-/// third of the peak): G^T y gathers from G's own values through an index of where each
-/// column entry sits, 4 bytes per block entry instead of 12 per entry.
+/// D * i + k. G is assembled (in parallel, straight into its storage): products with it ran
+/// 4.6x faster than matrix-free gathers over the simplices (measured, 537k vertices), whose
+/// per-simplex reads are scattered. Its D rows of a vertex share one column pattern (the vertex
+/// and its neighbours), so G is stored by blocks: one column index and D side-by-side values per
+/// entry. G^T is not stored (it doubled the operators' memory, a third of the peak): G^T y
+/// gathers each entry's D values, contiguous, through the index of its transposed entry. With
+/// G in Eigen's row storage the same gather read D scattered values and a row length per entry
+/// and took 7x the time of G u (measured, 536k vertices).
 template <int D>
 struct P1Operators {
-  /// (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|  (eq. 11)
-  SparseRowMatrix gradient;
-  /// Per entry (j, i) of G's row-block pattern (row block j, column i, at position
-  /// gradient.outerIndexPtr()[D j] / D + e): the offset of G(D i, j) in G's values; G(D i + k, j)
-  /// lies k row lengths of block i further.
-  std::vector<Index> transpose_index;
+  /// G, (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|
+  /// (eq. 11). Row block i holds the entries offsets[i] .. offsets[i + 1] - 1; entry e is in
+  /// column columns[e] (i and its neighbours, sorted) with G(D i + k, columns[e]) at
+  /// values[D e + k].
+  std::vector<Index> offsets;
+  std::vector<Index> columns;
+  std::vector<double> values;
+  /// Per entry e of row block i and column j: the entry of row block j and column i.
+  std::vector<Index> transposed;
   /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
   /// projection eq. (12)-(14) apply to the components of a nodal field. Empty unless assembled
   /// with_divergence (only the paper-form reference and curvature() need it).
@@ -40,10 +46,14 @@ struct P1Operators {
   Eigen::VectorXd ball_measure;  ///< #V: |B_i| (the diagonal of Lambda)
   std::vector<char> on_boundary; ///< #V: 1 for vertices on the walls of the box [0,1]^D
 
+  /// @brief G u, D #V entries, in parallel (each entry summed in a fixed order: deterministic).
+  Eigen::VectorXd gradient_times(const Eigen::VectorXd& u) const;
   /// @brief G^T y for y of D #V entries, in parallel and in a fixed order (deterministic).
   Eigen::VectorXd gradient_transpose_times(const Eigen::VectorXd& y) const;
   /// @brief sum_k w_{D i + k} G(D i + k, j)^2 over i for every j: diag(G^T W G).
   Eigen::VectorXd weighted_column_squares(const Eigen::VectorXd& w) const;
+  /// @brief G as a sparse matrix, for the paper-form reference and the tests.
+  SparseRowMatrix gradient_matrix() const;
   /// @brief |(G u)_i| per vertex.
   Eigen::VectorXd gradient_norms(const Eigen::VectorXd& u) const;
   /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)
