@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_set>
 
@@ -151,20 +152,28 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   // One pass per bisection level from the background cells down to h_min.
   const double expected_passes = std::max(1.0, std::ceil(D * std::log2(1.0 / (cells * o.h_min))));
   Candidates<D> cand = leaves_from(forest, 0, o.h_min);
-  std::vector<double> dist;
+  std::vector<double> dist, bound;
   std::vector<Index> nearest;
   while (!cand.nodes.empty()) {
+    bound.resize(cand.nodes.size());
     progress.update("mesh", std::min(1.0, passes / expected_passes));
-    data.query(cand.centroids, dist, &nearest, o.threads);
+    // A simplex is marked only with a data point closer than its radius + size / grading: the
+    // search for the nearest stops there (exact where it matters, much faster far out).
+    for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
+      const double size = forest.size(cand.nodes[i]);
+      bound[i] = size > o.h_max ? std::numeric_limits<double>::infinity() : cand.radii[i] + size / o.grading;
+    }
+    data.query_within(cand.centroids, bound, dist, nearest, o.threads);
     const Index first_new = Index(forest.simplices().size());
     const Index vertices_before = Index(forest.vertices().size());
     double largest_marked = 0.0;
     std::vector<Index> marked;
     for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
       const double size = forest.size(cand.nodes[i]);
-      const double dist_lower = std::max(0.0, dist[i] - cand.radii[i]);
-      const double local = o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[i]]);
-      if (size > o.h_max || (size > local && size > o.grading * dist_lower)) {
+      const bool near = nearest[i] >= 0;  // a point within the bound
+      const double dist_lower = near ? std::max(0.0, dist[i] - cand.radii[i]) : 0.0;
+      const double local = !near || o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[i]]);
+      if (size > o.h_max || (near && size > local && size > o.grading * dist_lower)) {
         marked.push_back(cand.nodes[i]);
         largest_marked = std::max(largest_marked, size);
       }

@@ -9,8 +9,11 @@
 #include <flann/flann.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <thread>
+
+#include <omp.h>
 
 namespace lsr {
 
@@ -18,8 +21,28 @@ template <int D>
 struct NearestPointIndex<D>::Impl {
   Points<D> points;
   std::vector<double> flat;  // FLANN reads row-major coordinates and does not copy them
-  std::unique_ptr<flann::Index<flann::L2<double>>> index;
+  std::unique_ptr<flann::KDTreeSingleIndex<flann::L2<double>>> index;
 };
+
+namespace {
+
+// The nearest point closer than a bound: FLANN prunes every subtree farther than the bound
+// from the start, instead of from the first leaf it reaches.
+struct BoundedNearest : flann::ResultSet<double> {
+  explicit BoundedNearest(double bound_squared) : worst(bound_squared) {}
+  bool full() const override { return true; }
+  void addPoint(double dist, std::size_t i) override {
+    if (dist < worst) {
+      worst = dist;
+      index = i;
+    }
+  }
+  double worstDist() const override { return worst; }
+  double worst;
+  std::size_t index = std::size_t(-1);
+};
+
+}  // namespace
 
 template <int D>
 NearestPointIndex<D>::NearestPointIndex(Points<D> points) : impl_(std::make_unique<Impl>()) {
@@ -31,7 +54,7 @@ NearestPointIndex<D>::NearestPointIndex(Points<D> points) : impl_(std::make_uniq
     for (int d = 0; d < D; ++d) impl_->flat[i * D + d] = p[i][d];
   }
   flann::Matrix<double> data(impl_->flat.data(), p.size(), D);
-  impl_->index = std::make_unique<flann::Index<flann::L2<double>>>(
+  impl_->index = std::make_unique<flann::KDTreeSingleIndex<flann::L2<double>>>(
       data, flann::KDTreeSingleIndexParams(/*leaf_max_size=*/12));
   impl_->index->buildIndex();
 }
@@ -69,6 +92,34 @@ void NearestPointIndex<D>::query(const Points<D>& queries, std::vector<double>& 
   for (std::size_t i = 0; i < n; ++i) {
     distance[i] = std::sqrt(distance[i]);
     if (nearest) (*nearest)[i] = Index(idx[i]);
+  }
+}
+
+template <int D>
+void NearestPointIndex<D>::query_within(const Points<D>& queries, const std::vector<double>& bound,
+                                        std::vector<double>& distance, std::vector<Index>& nearest,
+                                        int threads) const {
+  const long n = long(queries.size());
+  distance.assign(queries.size(), std::numeric_limits<double>::infinity());
+  nearest.assign(queries.size(), -1);
+  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false);
+  const Points<D>& p = impl_->points;
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+  {
+    Index hint = -1;  // the nearest point of this thread's previous query
+#pragma omp for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const Vec<D>& q = queries[std::size_t(i)];
+      double bound2 = bound[std::size_t(i)] * bound[std::size_t(i)];
+      // Any point at most the hint's distance away is found: the bound only prunes.
+      if (hint >= 0) bound2 = std::min(bound2, (q - p[std::size_t(hint)]).squaredNorm() * (1.0 + 1e-9) + 1e-300);
+      BoundedNearest found(bound2);
+      impl_->index->findNeighbors(found, q.data(), params);
+      if (found.index == std::size_t(-1)) continue;
+      if (std::sqrt(found.worst) >= bound[std::size_t(i)]) continue;
+      distance[std::size_t(i)] = std::sqrt(found.worst);
+      nearest[std::size_t(i)] = hint = Index(found.index);
+    }
   }
 }
 

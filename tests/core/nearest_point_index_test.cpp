@@ -42,6 +42,40 @@ TEST(NearestPointIndex, MatchesBruteForce2D) { check_against_brute_force<2>(1); 
 TEST(NearestPointIndex, MatchesBruteForce3D) { check_against_brute_force<3>(1); }
 TEST(NearestPointIndex, MatchesBruteForceOnSeveralThreads) { check_against_brute_force<3>(2); }
 
+// Within the bound: the nearest point, as query() finds it; beyond: none. The queries come in
+// an order whose neighbours are far apart and near alike, so that the previous query's
+// nearest point is sometimes a tight bound and sometimes a useless one.
+template <int D>
+void check_bounded_queries(int threads) {
+  const Points<D> data = random_points<D>(3000, 3, 0.0, 1.0);
+  const Points<D> queries = random_points<D>(2000, 4, -0.2, 1.2);
+  std::vector<double> bound(queries.size());
+  for (std::size_t q = 0; q < queries.size(); ++q) bound[q] = 0.05 * double(q % 7);
+  NearestPointIndex<D> index(data);
+  std::vector<double> all, dist;
+  std::vector<Index> all_nearest, nearest;
+  index.query(queries, all, &all_nearest, threads);
+  index.query_within(queries, bound, dist, nearest, threads);
+  int found = 0;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    if (all[q] < bound[q]) {
+      ++found;
+      EXPECT_EQ(nearest[q], all_nearest[q]) << q;
+      EXPECT_EQ(dist[q], all[q]) << q;
+    } else {
+      EXPECT_EQ(nearest[q], -1) << q;
+      EXPECT_EQ(dist[q], std::numeric_limits<double>::infinity()) << q;
+    }
+  }
+  EXPECT_GT(found, 500);
+  EXPECT_LT(found, 1900);
+}
+
+TEST(NearestPointIndex, BoundedQueriesFindTheNearestPointWithinTheBoundOnly) {
+  check_bounded_queries<2>(1);
+  check_bounded_queries<3>(2);
+}
+
 TEST(NearestPointIndex, DuplicatesAndSinglePointsWork) {
   NearestPointIndex<3> one(Points<3>{Vec<3>(1, 2, 3)});
   EXPECT_DOUBLE_EQ(one.distance(Vec<3>(1, 2, 4)), 1.0);

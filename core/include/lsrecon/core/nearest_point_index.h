@@ -30,6 +30,12 @@ class NearestPointIndex {
   void query(const Points<D>& queries, std::vector<double>& distance,
              std::vector<Index>* nearest = nullptr, int threads = 0) const;
 
+  /// @brief For each query, its nearest data point if that lies closer than bound[i]
+  /// (otherwise distance +inf and index -1): exact, as query() where found, and cheaper the
+  /// tighter the bounds. Each search is also bounded by the distance to the previous query's
+  /// nearest point on the same thread: consecutive queries near each other are cheapest.
+  void query_within(const Points<D>& queries, const std::vector<double>& bound, std::vector<double>& distance,
+                    std::vector<Index>& nearest, int threads = 0) const;
   /// @brief The k nearest data points of each query (k * #queries indices, nearest first;
   /// fewer than k points in the set repeat the last found index).
   void query_k(const Points<D>& queries, int k, std::vector<Index>& nearest, int threads = 0) const;
