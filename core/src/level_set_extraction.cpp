@@ -14,7 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <unordered_map>
+
+#include <omp.h>
 
 namespace lsr {
 namespace {
@@ -30,55 +31,83 @@ bool even_permutation(const std::array<int, N>& p) {
   return inversions % 2 == 0;
 }
 
+// The output vertices: one per crossed mesh edge (a < b), numbered in the order of a, then b,
+// so that each vertex finds its edges' numbers from its own neighbour list, in parallel.
 template <int D>
-class Marcher {
+class EdgeVertices {
  public:
-  Marcher(const SimplexMesh<D>& mesh, const std::vector<double>& u, double margin) : mesh_(mesh), u_(u), margin_(margin) {}
-
-  // Output vertex on mesh edge (a, b), created once per edge.
-  Index edge_vertex(Index a, Index b) {
-    if (a > b) std::swap(a, b);
-    const std::uint64_t key = (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-    auto [it, inserted] = index_.try_emplace(key, Index(out_.vertices.size()));
-    if (inserted) {
-      double t = u_[a] / (u_[a] - u_[b]);  // u_a, u_b on opposite sides: denominator != 0
-      t = std::clamp(t, margin_, 1.0 - margin_);
-      out_.sources.push_back({a, b, t});
-      out_.vertices.push_back(edge_point_position(mesh_, out_.sources.back()));
+  EdgeVertices(const SimplexMesh<D>& mesh, const std::vector<double>& u, const VertexNeighbours& g, double margin,
+               int threads, LevelSetMesh<D>& out)
+      : u_(u), g_(g), first_(u.size() + 1, 0) {
+    const long nv = long(u.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long a = 0; a < nv; ++a) first_[std::size_t(a) + 1] = Index(crossed_above(Index(a), g.offsets[a + 1]));
+    for (std::size_t a = 0; a < u.size(); ++a) first_[a + 1] += first_[a];
+    out.vertices.resize(std::size_t(first_.back()));
+    out.sources.resize(std::size_t(first_.back()));
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long a = 0; a < nv; ++a) {
+      Index k = first_[std::size_t(a)];
+      for (Index e = g.offsets[a]; e < g.offsets[a + 1]; ++e) {
+        const Index b = g.neighbours[e];
+        if (b < a || !crosses(Index(a), b)) continue;
+        double t = u[a] / (u[a] - u[b]);  // opposite signs: the denominator is not 0
+        out.sources[k] = {Index(a), b, std::clamp(t, margin, 1.0 - margin)};
+        out.vertices[k] = edge_point_position(mesh, out.sources[k]);
+        ++k;
+      }
     }
-    return it->second;
   }
 
-  void add(std::array<Index, D> facet, bool flip) {
-    if (flip) std::swap(facet[0], facet[1]);
-    out_.facets.push_back(facet);
+  // The output vertex on the crossed mesh edge (a, b).
+  Index at(Index a, Index b) const {
+    if (a > b) std::swap(a, b);
+    const Index* row = g_.neighbours.data();
+    const Index e = Index(std::lower_bound(row + g_.offsets[a], row + g_.offsets[a + 1], b) - row);
+    return first_[std::size_t(a)] + Index(crossed_above(a, e));
   }
-
-  void march(Index s);
-  LevelSetMesh<D> take() { return std::move(out_); }
 
  private:
-  const SimplexMesh<D>& mesh_;
+  bool crosses(Index a, Index b) const { return negative(u_[a]) != negative(u_[b]); }
+  // Crossed edges (a, b) with b > a among a's neighbours before position `end`.
+  int crossed_above(Index a, Index end) const {
+    int n = 0;
+    for (Index e = g_.offsets[a]; e < end; ++e) n += g_.neighbours[e] > a && crosses(a, g_.neighbours[e]);
+    return n;
+  }
+
   const std::vector<double>& u_;
-  double margin_;
-  std::unordered_map<std::uint64_t, Index> index_;
-  LevelSetMesh<D> out_;
+  const VertexNeighbours& g_;
+  std::vector<Index> first_;
 };
 
+// Facets of a simplex: 0, 1 (a lone vertex) or, in 3D, 2 (a quad).
 template <int D>
-void Marcher<D>::march(Index s) {
-  const auto& v = mesh_.simplices[s];
+int facet_count(const SimplexMesh<D>& mesh, const std::vector<double>& u, Index s) {
+  int negatives = 0;
+  for (Index v : mesh.simplices[s]) negatives += negative(u[v]);
+  return negatives == 0 || negatives == D + 1 ? 0 : (negatives == 1 || negatives == D ? 1 : 2);
+}
+
+// Writes simplex s's facets from `out` on.
+template <int D>
+void march(const SimplexMesh<D>& mesh, const std::vector<double>& u, const EdgeVertices<D>& edges,
+           const Points<D>& X, Index s, std::array<Index, D>* out) {
+  const auto& v = mesh.simplices[s];
   std::array<int, D + 1> order{};  // local indices: negatives first, then positives
   int negatives = 0;
   for (int k = 0; k <= D; ++k) {
-    if (negative(u_[v[k]])) order[negatives++] = k;
+    if (negative(u[v[k]])) order[negatives++] = k;
   }
-  if (negatives == 0 || negatives == D + 1) return;
   for (int k = 0, p = negatives; k <= D; ++k) {
-    if (!negative(u_[v[k]])) order[p++] = k;
+    if (!negative(u[v[k]])) order[p++] = k;
   }
   const bool even = even_permutation<D + 1>(order);
   auto at = [&](int i) { return v[order[i]]; };
+  auto add = [&](std::array<Index, D> facet, bool flip) {
+    if (flip) std::swap(facet[0], facet[1]);
+    *out++ = facet;
+  };
 
   if (negatives == 1 || negatives == D) {
     // A lone vertex: the negative one, or the positive one (last in order).
@@ -86,7 +115,7 @@ void Marcher<D>::march(Index s) {
     std::array<int, D + 1> fan = order;  // lone vertex first, the others in order
     if (lone == D) std::rotate(fan.begin(), fan.begin() + D, fan.end());
     std::array<Index, D> facet{};
-    for (int k = 0; k < D; ++k) facet[k] = edge_vertex(v[fan[0]], v[fan[k + 1]]);
+    for (int k = 0; k < D; ++k) facet[k] = edges.at(v[fan[0]], v[fan[k + 1]]);
     // Normal away from the lone vertex when `fan` is even; it must point to u > 0.
     const bool fan_even = even_permutation<D + 1>(fan);
     add(facet, negatives == 1 ? !fan_even : fan_even);
@@ -95,9 +124,7 @@ void Marcher<D>::march(Index s) {
   // D = 3, two negatives (n1, n2) and two positives (p1, p2): a quad on the edges
   // (n1p1, n1p2, n2p2, n2p1), correctly oriented when (n1, n2, p1, p2) is even.
   if constexpr (D == 3) {
-    const Index q[4] = {edge_vertex(at(0), at(2)), edge_vertex(at(0), at(3)),
-                        edge_vertex(at(1), at(3)), edge_vertex(at(1), at(2))};
-    const auto& X = out_.vertices;
+    const Index q[4] = {edges.at(at(0), at(2)), edges.at(at(0), at(3)), edges.at(at(1), at(3)), edges.at(at(1), at(2))};
     if (split_quad_along_02<3>(X[q[0]], X[q[1]], X[q[2]], X[q[3]])) {
       add({q[0], q[1], q[2]}, !even);
       add({q[0], q[2], q[3]}, !even);
@@ -111,7 +138,8 @@ void Marcher<D>::march(Index s) {
 }  // namespace
 
 template <int D>
-LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u, double edge_margin) {
+LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u, double edge_margin,
+                                       const VertexNeighbours* neighbours, int threads) {
   if (u.size() != mesh.vertices.size()) {
     throw InvalidInput("level set field has " + std::to_string(u.size()) + " values for " +
                            std::to_string(mesh.vertices.size()) + " mesh vertices",
@@ -123,9 +151,34 @@ LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::ve
                          "the solver diverged or the field was not initialised");
     }
   }
-  Marcher<D> marcher(mesh, u, std::clamp(edge_margin, 1e-9, 0.25));
-  for (Index s = 0; s < Index(mesh.simplices.size()); ++s) marcher.march(s);
-  return marcher.take();
+  threads = threads > 0 ? threads : omp_get_max_threads();
+  const VertexNeighbours own = neighbours ? VertexNeighbours() : vertex_neighbours(mesh, threads);
+  LevelSetMesh<D> out;
+  const EdgeVertices<D> edges(mesh, u, neighbours ? *neighbours : own, std::clamp(edge_margin, 1e-9, 0.25), threads, out);
+  // Facets in simplex order: counted per fixed block of simplices, then written in parallel.
+  constexpr long kBlock = 16384;
+  const long ns = long(mesh.simplices.size());
+  const long blocks = (ns + kBlock - 1) / kBlock;
+  std::vector<Index> first(std::size_t(blocks) + 1, 0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long b = 0; b < blocks; ++b) {
+    Index n = 0;
+    for (long s = b * kBlock; s < std::min(ns, (b + 1) * kBlock); ++s) n += facet_count(mesh, u, Index(s));
+    first[std::size_t(b) + 1] = n;
+  }
+  for (std::size_t b = 0; b < std::size_t(blocks); ++b) first[b + 1] += first[b];
+  out.facets.resize(std::size_t(first.back()));
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (long b = 0; b < blocks; ++b) {
+    std::array<Index, D>* next = out.facets.data() + first[std::size_t(b)];
+    for (long s = b * kBlock; s < std::min(ns, (b + 1) * kBlock); ++s) {
+      const int n = facet_count(mesh, u, Index(s));
+      if (n == 0) continue;
+      march<D>(mesh, u, edges, out.vertices, Index(s), next);
+      next += n;
+    }
+  }
+  return out;
 }
 
 std::vector<std::vector<Index>> closed_loops(const LevelSetMesh<2>& curves) {
@@ -159,7 +212,9 @@ std::vector<std::vector<Index>> closed_loops(const LevelSetMesh<2>& curves) {
   return loops;
 }
 
-template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, double);
-template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, double);
+template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, double,
+                                                   const VertexNeighbours*, int);
+template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, double,
+                                                   const VertexNeighbours*, int);
 
 }  // namespace lsr

@@ -74,25 +74,10 @@ const Points<D>& NearestPointIndex<D>::points() const {
 template <int D>
 void NearestPointIndex<D>::query(const Points<D>& queries, std::vector<double>& distance,
                                  std::vector<Index>* nearest, int threads) const {
-  const std::size_t n = queries.size();
-  distance.assign(n, 0.0);
-  if (nearest) nearest->assign(n, -1);
-  if (n == 0) return;
-  std::vector<double> flat(n * D);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < D; ++d) flat[i * D + d] = queries[i][d];
-  }
-  std::vector<std::size_t> idx(n);
-  flann::Matrix<double> q(flat.data(), n, D);
-  flann::Matrix<std::size_t> indices(idx.data(), n, 1);
-  flann::Matrix<double> dist2(distance.data(), n, 1);
-  flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, /*eps=*/0.0f, /*sorted=*/false);
-  params.cores = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  impl_->index->knnSearch(q, indices, dist2, 1, params);
-  for (std::size_t i = 0; i < n; ++i) {
-    distance[i] = std::sqrt(distance[i]);
-    if (nearest) (*nearest)[i] = Index(idx[i]);
-  }
+  std::vector<Index> found;
+  query_within(queries, std::vector<double>(queries.size(), std::numeric_limits<double>::infinity()), distance,
+               found, threads);
+  if (nearest) *nearest = std::move(found);
 }
 
 template <int D>

@@ -143,6 +143,26 @@ TEST(LevelSetExtraction, ZerosOnMeshVerticesCountAsPositive) {
   expect_closed_surface(e.zero_set, 1, {0});
 }
 
+// Vertices numbered by their edges and facets in simplex order: the same surface whatever the
+// thread count, and whether the caller passes the mesh's neighbours or not.
+TEST(LevelSetExtraction, IsTheSameOnAnyNumberOfThreads) {
+  const Sphere s{Vec<3>(0.5, 0.5, 0.5), 0.3};
+  const testing::SampledField<3> f =
+      testing::sampled_field<3>(s.sample(4000), 1.0 / 32, [&](const Vec<3>& x) { return s.signed_distance(x); });
+  const SimplexMesh<3>& mesh = f.adaptive.mesh;
+  const VertexNeighbours g = vertex_neighbours(mesh);
+  const LevelSetMesh<3> one = extract_zero_level_set(mesh, f.values, 1e-9, &g, 1);
+  const LevelSetMesh<3> two = extract_zero_level_set(mesh, f.values, 1e-9, nullptr, 2);
+  ASSERT_GT(one.facets.size(), 1000u);
+  EXPECT_TRUE(one.facets == two.facets);
+  EXPECT_TRUE(one.vertices == two.vertices);
+  for (std::size_t i = 1; i < one.sources.size(); ++i) {
+    const EdgePoint& a = one.sources[i - 1];
+    const EdgePoint& b = one.sources[i];
+    EXPECT_TRUE(a.a < b.a || (a.a == b.a && a.b < b.b)) << i;
+  }
+}
+
 TEST(LevelSetExtraction, RejectsMismatchedOrNonFiniteFields) {
   SimplexMesh<2> m;
   m.vertices = {Vec<2>(0, 0), Vec<2>(1, 0), Vec<2>(0, 1)};
