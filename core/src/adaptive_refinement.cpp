@@ -4,6 +4,8 @@
 /// one and bisects those larger than the sizing function allows.
 #include "lsrecon/core/adaptive_refinement.h"
 
+#include "lsrecon/core/z_order.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -194,43 +196,18 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   return out;
 }
 
-namespace {
-
-// Interleaves the bits of the coordinates quantised to 64 / D bits each (unit box).
-template <int D>
-std::uint64_t morton_key(const Vec<D>& x) {
-  constexpr int bits = 64 / D;
-  const double cells = std::ldexp(1.0, bits) - 1.0;
-  std::array<std::uint64_t, D> q{};
-  for (int d = 0; d < D; ++d) q[d] = std::uint64_t(std::clamp(x[d], 0.0, 1.0) * cells);
-  std::uint64_t key = 0;
-  for (int b = bits - 1; b >= 0; --b) {
-    for (int d = 0; d < D; ++d) key = (key << 1) | ((q[d] >> b) & 1u);
-  }
-  return key;
-}
-
-// New index of each forest vertex: its rank in Z-order (ties, impossible for distinct
-// vertices at 64 / D bits, by index).
-template <int D>
-std::vector<Index> z_order(const Points<D>& vertices) {
-  std::vector<std::pair<std::uint64_t, Index>> keys(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) keys[i] = {morton_key<D>(vertices[i]), Index(i)};
-  std::sort(keys.begin(), keys.end());
-  std::vector<Index> rank(vertices.size());
-  for (std::size_t r = 0; r < keys.size(); ++r) rank[std::size_t(keys[r].second)] = Index(r);
-  return rank;
-}
-
-}  // namespace
-
 template <int D>
 AdaptiveMesh<D> leaf_mesh(KuhnBisectionForest<D> refined) {
   AdaptiveMesh<D> out;
   out.forest = std::move(refined);
   auto& forest = out.forest;
   forest.finish_refinement();
-  const std::vector<Index> rank = z_order<D>(forest.vertices());
+  // New index of each forest vertex: its rank in Z-order.
+  std::vector<Index> rank(forest.vertices().size());
+  {
+    const std::vector<Index> order = z_order<D>(forest.vertices());
+    for (std::size_t r = 0; r < order.size(); ++r) rank[std::size_t(order[r])] = Index(r);
+  }
   out.mesh.vertices.resize(rank.size());
   for (std::size_t i = 0; i < rank.size(); ++i) out.mesh.vertices[std::size_t(rank[i])] = forest.vertices()[i];
   out.vertex_of_node_vertex = rank;

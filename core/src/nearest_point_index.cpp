@@ -5,13 +5,13 @@
 
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/point_validation.h"
+#include "lsrecon/core/z_order.h"
 
 #include <flann/flann.hpp>
 
 #include <algorithm>
 #include <limits>
 #include <cmath>
-#include <thread>
 
 #include <omp.h>
 
@@ -40,6 +40,30 @@ struct BoundedNearest : flann::ResultSet<double> {
   double worstDist() const override { return worst; }
   double worst;
   std::size_t index = std::size_t(-1);
+};
+
+// The k nearest points closer than a bound, nearest first; a point as far as one already kept
+// goes after it (as FLANN's own k-nearest result set does).
+struct BoundedKNearest : flann::ResultSet<double> {
+  BoundedKNearest(int k, double bound_squared, double* dist, std::size_t* index)
+      : k(k), bound(bound_squared), dist(dist), index(index) {}
+  bool full() const override { return count == k; }
+  void addPoint(double d, std::size_t i) override {
+    if (d >= worstDist()) return;
+    int at = count < k ? count++ : k - 1;
+    for (; at > 0 && dist[at - 1] > d; --at) {
+      dist[at] = dist[at - 1];
+      index[at] = index[at - 1];
+    }
+    dist[at] = d;
+    index[at] = i;
+  }
+  double worstDist() const override { return count == k ? dist[k - 1] : bound; }
+  int k;
+  double bound;
+  double* dist;
+  std::size_t* index;
+  int count = 0;
 };
 
 }  // namespace
@@ -111,34 +135,33 @@ void NearestPointIndex<D>::query_within(const Points<D>& queries, const std::vec
 template <int D>
 void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, std::vector<Index>& nearest,
                                    int threads) const {
-  const std::size_t n = queries.size();
-  const std::size_t kk = std::size_t(std::max(1, std::min<int>(k, int(impl_->points.size()))));
-  nearest.assign(n * std::size_t(k), -1);
-  if (n == 0) return;
-  flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, /*sorted=*/true);
-  params.cores = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  // FLANN's results take 16 bytes per neighbour (size_t index, double distance): in chunks of
-  // 2^20 neighbours, or 120 neighbours of 200k points would need 0.4 GB at once (measured).
-  const std::size_t chunk = std::max<std::size_t>(1, (std::size_t(1) << 20) / kk);
-  std::vector<double> flat;
-  std::vector<std::size_t> idx;
-  std::vector<double> dist2;
-  for (std::size_t first = 0; first < n; first += chunk) {
-    const std::size_t m = std::min(chunk, n - first);
-    flat.resize(m * D);
-    for (std::size_t i = 0; i < m; ++i) {
-      for (int d = 0; d < D; ++d) flat[i * D + d] = queries[first + i][d];
-    }
-    idx.resize(m * kk);
-    dist2.resize(m * kk);
-    flann::Matrix<double> q(flat.data(), m, D);
-    flann::Matrix<std::size_t> indices(idx.data(), m, kk);
-    flann::Matrix<double> dists(dist2.data(), m, kk);
-    impl_->index->knnSearch(q, indices, dists, kk, params);
-    for (std::size_t i = 0; i < m; ++i) {
-      for (std::size_t j = 0; j < std::size_t(k); ++j) {
-        nearest[(first + i) * k + j] = Index(idx[i * kk + std::min(j, kk - 1)]);
+  const long n = long(queries.size());
+  const int kk = std::max(1, std::min<int>(k, int(impl_->points.size())));
+  nearest.assign(queries.size() * std::size_t(k), -1);
+  const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, true);
+  // In Z-order, each query's k nearest lie within the previous one's k-th distance plus the
+  // step between them: a tight bound from the start of the search.
+  const std::vector<Index> order = z_order<D>(queries);
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+  {
+    std::vector<double> dist(std::size_t(kk), 0.0);
+    std::vector<std::size_t> index(std::size_t(kk), 0);
+    const Vec<D>* previous = nullptr;
+    double previous_reach = 0.0;
+#pragma omp for schedule(static)
+    for (long r = 0; r < n; ++r) {
+      const std::size_t i = std::size_t(order[std::size_t(r)]);
+      const Vec<D>& q = queries[i];
+      const double bound = previous ? previous_reach + (q - *previous).norm() : std::numeric_limits<double>::infinity();
+      BoundedKNearest found(kk, bound * bound * (1.0 + 1e-9) + 1e-300, dist.data(), index.data());
+      impl_->index->findNeighbors(found, q.data(), params);
+      if (found.count < kk) {  // only if round-off defeated the margin
+        found = BoundedKNearest(kk, std::numeric_limits<double>::infinity(), dist.data(), index.data());
+        impl_->index->findNeighbors(found, q.data(), params);
       }
+      for (int j = 0; j < k; ++j) nearest[i * std::size_t(k) + std::size_t(j)] = Index(index[std::size_t(std::min(j, kk - 1))]);
+      previous = &q;
+      previous_reach = std::sqrt(dist[std::size_t(kk) - 1]);
     }
   }
 }

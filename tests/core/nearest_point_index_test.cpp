@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <numeric>
 #include <random>
 
 namespace lsr {
@@ -74,6 +76,36 @@ void check_bounded_queries(int threads) {
 TEST(NearestPointIndex, BoundedQueriesFindTheNearestPointWithinTheBoundOnly) {
   check_bounded_queries<2>(1);
   check_bounded_queries<3>(2);
+}
+
+// The k nearest, nearest first, as a brute-force sort finds them (distinct distances: random
+// points), the same on any thread count; k beyond the point count repeats the last one.
+template <int D>
+void check_k_nearest(int k) {
+  const Points<D> data = random_points<D>(2000, 5, 0.0, 1.0);
+  const Points<D> queries = random_points<D>(700, 6, -0.1, 1.1);
+  NearestPointIndex<D> index(data);
+  std::vector<Index> one, two;
+  index.query_k(queries, k, one, 1);
+  index.query_k(queries, k, two, 2);
+  EXPECT_TRUE(one == two);
+  std::vector<Index> by_distance(data.size());
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    std::iota(by_distance.begin(), by_distance.end(), 0);
+    std::sort(by_distance.begin(), by_distance.end(), [&](Index a, Index b) {
+      return (data[a] - queries[q]).squaredNorm() < (data[b] - queries[q]).squaredNorm();
+    });
+    for (int j = 0; j < k; ++j) ASSERT_EQ(one[q * k + j], by_distance[j]) << q << " " << j;
+  }
+  NearestPointIndex<D> three(Points<D>(data.begin(), data.begin() + 3));
+  three.query_k(queries, 5, one, 2);
+  for (std::size_t q = 0; q < queries.size(); ++q) EXPECT_EQ(one[q * 5 + 4], one[q * 5 + 2]);
+}
+
+TEST(NearestPointIndex, KNearestMatchBruteForce) {
+  check_k_nearest<2>(4);
+  check_k_nearest<3>(12);
+  check_k_nearest<3>(30);
 }
 
 TEST(NearestPointIndex, DuplicatesAndSinglePointsWork) {
