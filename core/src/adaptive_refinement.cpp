@@ -14,6 +14,8 @@
 #include <string>
 #include <unordered_set>
 
+#include <omp.h>
+
 namespace lsr {
 namespace {
 
@@ -68,25 +70,41 @@ struct Candidates {
   std::vector<Index> nodes;
   Points<D> centroids;
   std::vector<double> radii;
+  std::vector<double> sizes;
 };
 
 // The leaves created since `first` that a further bisection could concern: no simplex of size
 // h_min or less is ever bisected (every local size is at least h_min), so those need no
-// distance query.
+// distance query. Measured in parallel, listed in node order.
 template <int D>
-Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min) {
-  Candidates<D> c;
+Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min, int threads) {
   const auto& simplices = forest.simplices();
-  for (Index s = first; s < Index(simplices.size()); ++s) {
-    if (!forest.is_leaf(s) || forest.size(s) <= h_min) continue;
+  const long n = long(simplices.size()) - long(first);
+  Candidates<D> all;
+  all.centroids.resize(std::size_t(std::max(0L, n)));
+  all.radii.assign(all.centroids.size(), 0.0);
+  all.sizes.assign(all.centroids.size(), 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (long i = 0; i < n; ++i) {
+    const Index s = first + Index(i);
+    if (!forest.is_leaf(s)) continue;
+    all.sizes[std::size_t(i)] = forest.size(s);
+    if (all.sizes[std::size_t(i)] <= h_min) continue;
     Vec<D> centroid = Vec<D>::Zero();
     for (Index v : simplices[s].v) centroid += forest.vertices()[v];
     centroid /= double(D + 1);
     double r = 0.0;
     for (Index v : simplices[s].v) r = std::max(r, (forest.vertices()[v] - centroid).norm());
-    c.nodes.push_back(s);
-    c.centroids.push_back(centroid);
-    c.radii.push_back(r);
+    all.centroids[std::size_t(i)] = centroid;
+    all.radii[std::size_t(i)] = r;
+  }
+  Candidates<D> c;
+  for (long i = 0; i < n; ++i) {
+    if (all.sizes[std::size_t(i)] <= h_min) continue;  // inner nodes have size 0 here
+    c.nodes.push_back(first + Index(i));
+    c.centroids.push_back(all.centroids[std::size_t(i)]);
+    c.radii.push_back(all.radii[std::size_t(i)]);
+    c.sizes.push_back(all.sizes[std::size_t(i)]);
   }
   return c;
 }
@@ -153,7 +171,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   int passes = 0;
   // One pass per bisection level from the background cells down to h_min.
   const double expected_passes = std::max(1.0, std::ceil(D * std::log2(1.0 / (cells * o.h_min))));
-  Candidates<D> cand = leaves_from(forest, 0, o.h_min);
+  Candidates<D> cand = leaves_from(forest, 0, o.h_min, o.threads);
   std::vector<double> dist, bound;
   std::vector<Index> nearest;
   while (!cand.nodes.empty()) {
@@ -162,7 +180,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     // A simplex is marked only with a data point closer than its radius + size / grading: the
     // search for the nearest stops there (exact where it matters, much faster far out).
     for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
-      const double size = forest.size(cand.nodes[i]);
+      const double size = cand.sizes[i];
       bound[i] = size > o.h_max ? std::numeric_limits<double>::infinity() : cand.radii[i] + size / o.grading;
     }
     data.query_within(cand.centroids, bound, dist, nearest, o.threads);
@@ -171,7 +189,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     double largest_marked = 0.0;
     std::vector<Index> marked;
     for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
-      const double size = forest.size(cand.nodes[i]);
+      const double size = cand.sizes[i];
       const bool near = nearest[i] >= 0;  // a point within the bound
       const double dist_lower = near ? std::max(0.0, dist[i] - cand.radii[i]) : 0.0;
       const double local = !near || o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[i]]);
@@ -189,7 +207,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     check_predicted_size<D>(double(forest.vertices().size()),
                             double(forest.vertices().size()) - vertices_before,
                             largest_marked / std::pow(2.0, 1.0 / D), predicted);
-    cand = leaves_from(forest, first_new, o.h_min);
+    cand = leaves_from(forest, first_new, o.h_min, o.threads);
   }
   AdaptiveMesh<D> out = leaf_mesh(std::move(forest));
   out.stats.passes = passes;

@@ -142,14 +142,15 @@ void KuhnBisectionForest<D>::refine(Index s, int depth) {
 
   const Index a = simplices_[s].v[0];
   const Index b = simplices_[s].v[simplices_[s].tag];
-  std::vector<Index> patch;
+  patch_.clear();  // reused: nothing below recurses
   for (Index t : leaves_at_vertex_[a]) {
-    if (contains(t, b)) patch.push_back(t);
+    if (contains(t, b)) patch_.push_back(t);
   }
   const Index z = Index(vertices_.size());
   vertices_.push_back(0.5 * (vertices_[a] + vertices_[b]));
-  leaves_at_vertex_.emplace_back();
-  for (Index t : patch) bisect(t, z);
+  // Room for the leaves a vertex typically ends up in, allocated once instead of doubling.
+  leaves_at_vertex_.emplace_back().reserve(kTypicalLeavesAtVertex);
+  for (Index t : patch_) bisect(t, z);
 }
 
 template <int D>

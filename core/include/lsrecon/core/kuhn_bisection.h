@@ -78,6 +78,8 @@ class KuhnBisectionForest {
   Points<D> vertices_;
   std::vector<ForestSimplex<D>> simplices_;
   std::vector<std::vector<Index>> leaves_at_vertex_;
+  std::vector<Index> patch_;  ///< the leaves around the edge refine() bisects
+  static constexpr std::size_t kTypicalLeavesAtVertex = D == 2 ? 8 : 32;
   Index leaf_count_ = 0;
 };
 
