@@ -3,6 +3,7 @@
 #include "lsrecon/core/p1_operators.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -88,36 +89,48 @@ Eigen::VectorXd norms_per_vertex(const Eigen::VectorXd& field) {
 
 int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
-// The transposed entry of each entry, found by binary search (the block pattern of G is
-// symmetric: i is in row block j's columns exactly when j is in row block i's).
-template <int D>
-std::vector<Index> transposed_entries(const P1Operators<D>& ops, int threads) {
-  const Index nv = Index(ops.offsets.size()) - 1;
-  std::vector<Index> transposed(ops.columns.size());
-#pragma omp parallel for schedule(dynamic, 4096) num_threads(threads)
-  for (Index j = 0; j < nv; ++j) {
-    for (Index e = ops.offsets[j]; e < ops.offsets[j + 1]; ++e) {
-      const Index* row = ops.columns.data() + ops.offsets[ops.columns[e]];
-      const Index* end = ops.columns.data() + ops.offsets[ops.columns[e] + 1];
-      transposed[e] = Index(std::lower_bound(row, end, j) - ops.columns.data());
-    }
-  }
-  return transposed;
-}
-
-// sum over the entries e of row block j of f(i, the D values of the transposed entry (i, j)),
-// for every j.
+// out[j] = sum over the entries (i, j) of G's block pattern of f(i, G(D i .. D i + D - 1, j)),
+// for every j: G^T-like products scattered from G's rows, read in storage order. Each thread
+// owns the columns of its range of rows; the terms its rows give to other ranges' columns are
+// set aside first and added in row order, so every out[j] sums its terms in increasing i, as
+// one thread would: the same result on any number of threads.
 template <int D, class F>
-Eigen::VectorXd gather_columns(const P1Operators<D>& ops, F f) {
+Eigen::VectorXd scatter_columns(const P1Operators<D>& ops, F f) {
+  struct Term {
+    Index column;
+    double value;
+  };
   const Index nv = Index(ops.offsets.size()) - 1;
   Eigen::VectorXd out(nv);
-#pragma omp parallel for schedule(static)
-  for (Index j = 0; j < nv; ++j) {
-    double sum = 0.0;
-    for (Index e = ops.offsets[j]; e < ops.offsets[j + 1]; ++e) {
-      sum += f(ops.columns[e], ops.values.data() + D * std::size_t(ops.transposed[e]));
+  std::vector<std::vector<Term>> crossing;
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+#pragma omp single
+    crossing.resize(std::size_t(threads));
+    const Index lo = Index(std::int64_t(nv) * t / threads), hi = Index(std::int64_t(nv) * (t + 1) / threads);
+    auto mine = [&](Index j) { return j >= lo && j < hi; };
+    for (Index i = lo; i < hi; ++i) {
+      const Index first = ops.offsets[i], last = ops.offsets[i + 1];
+      if (mine(ops.columns[first]) && mine(ops.columns[last - 1])) continue;  // sorted columns
+      for (Index e = first; e < last; ++e) {
+        if (!mine(ops.columns[e])) crossing[std::size_t(t)].push_back({ops.columns[e], f(i, &ops.values[D * std::size_t(e)])});
+      }
     }
-    out[j] = sum;
+#pragma omp barrier
+    auto add_crossing = [&](int from) {
+      for (const Term& term : crossing[std::size_t(from)]) {
+        if (mine(term.column)) out[term.column] += term.value;
+      }
+    };
+    for (Index j = lo; j < hi; ++j) out[j] = 0.0;
+    for (int from = 0; from < t; ++from) add_crossing(from);
+    for (Index i = lo; i < hi; ++i) {
+      for (Index e = ops.offsets[i]; e < ops.offsets[i + 1]; ++e) {
+        if (mine(ops.columns[e])) out[ops.columns[e]] += f(i, &ops.values[D * std::size_t(e)]);
+      }
+    }
+    for (int from = t + 1; from < threads; ++from) add_crossing(from);
   }
   return out;
 }
@@ -131,7 +144,6 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
   P1Operators<D> ops;
   // Filled in place: a copy of each would touch another 0.6 GB per million vertices.
   assemble_gradient(mesh, g, neighbours ? *neighbours : vertex_neighbours(mesh, threads), threads, ops);
-  ops.transposed = transposed_entries(ops, threads);
   if (with_divergence) ops.divergence = assemble_divergence(mesh, g);
   ops.ball_measure = Eigen::Map<const Eigen::VectorXd>(g.ball_measure.data(), Eigen::Index(g.ball_measure.size()));
   ops.on_boundary.resize(mesh.vertices.size());
@@ -159,7 +171,7 @@ Eigen::VectorXd P1Operators<D>::gradient_times(const Eigen::VectorXd& u) const {
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_transpose_times(const Eigen::VectorXd& y) const {
-  return gather_columns<D>(*this, [&y](Index i, const double* g) {
+  return scatter_columns<D>(*this, [&y](Index i, const double* g) {
     double s = 0.0;
     for (int k = 0; k < D; ++k) s += g[k] * y[D * i + k];
     return s;
@@ -168,7 +180,7 @@ Eigen::VectorXd P1Operators<D>::gradient_transpose_times(const Eigen::VectorXd& 
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::weighted_column_squares(const Eigen::VectorXd& w) const {
-  return gather_columns<D>(*this, [&w](Index i, const double* g) {
+  return scatter_columns<D>(*this, [&w](Index i, const double* g) {
     double s = 0.0;
     for (int k = 0; k < D; ++k) s += w[D * i + k] * g[k] * g[k];
     return s;

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include <omp.h>
+
 namespace lsr {
 namespace {
 
@@ -92,7 +94,27 @@ void check_transpose_gather(const Fixture<D>& f) {
   EXPECT_LE((f.ops.weighted_column_squares(w) - squares).cwiseAbs().maxCoeff(), 1e-12 * squares.cwiseAbs().maxCoeff());
 }
 
-TEST(P1Operators, TransposeProductsGatheredFromGMatchEigen) {
+// Scattered by ranges of rows, each column still sums its terms in row order: bit for bit the
+// same on 1, 2 or 3 threads.
+TEST(P1Operators, TransposeProductsAreTheSameOnAnyNumberOfThreads) {
+  const auto f = fixture<3>(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(2000), 1.0 / 32);
+  const Eigen::Index n = 3 * Eigen::Index(f.ops.ball_measure.size());
+  const Eigen::VectorXd y = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0).array().sin();
+  const int threads = omp_get_max_threads();
+  std::vector<Eigen::VectorXd> products, squares;
+  for (int t : {1, 2, 3}) {
+    omp_set_num_threads(t);
+    products.push_back(f.ops.gradient_transpose_times(y));
+    squares.push_back(f.ops.weighted_column_squares(y.cwiseAbs()));
+  }
+  omp_set_num_threads(threads);
+  for (int k : {1, 2}) {
+    EXPECT_TRUE(products[k] == products[0]) << k + 1 << " threads";
+    EXPECT_TRUE(squares[k] == squares[0]) << k + 1 << " threads";
+  }
+}
+
+TEST(P1Operators, BlockProductsMatchEigen) {
   check_transpose_gather(fixture<2>(Circle{Vec<2>(0.5, 0.5), 0.3}.sample(2000), 1.0 / 128));
   check_transpose_gather(fixture<3>(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(2000), 1.0 / 32));
 }

@@ -24,10 +24,10 @@ using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, Index>;
 /// 4.6x faster than matrix-free gathers over the simplices (measured, 537k vertices), whose
 /// per-simplex reads are scattered. Its D rows of a vertex share one column pattern (the vertex
 /// and its neighbours), so G is stored by blocks: one column index and D side-by-side values per
-/// entry. G^T is not stored (it doubled the operators' memory, a third of the peak): G^T y
-/// gathers each entry's D values, contiguous, through the index of its transposed entry. With
-/// G in Eigen's row storage the same gather read D scattered values and a row length per entry
-/// and took 7x the time of G u (measured, 536k vertices).
+/// entry. G^T is not stored (it doubled the operators' memory, a third of the peak): G^T y is
+/// scattered from G's rows, read in storage order like G u. Gathered per column instead, through
+/// an index of transposed entries, it read scattered values and took 5x the time of G u on a
+/// Z-ordered mesh, 7x with G in Eigen's row storage (measured, 536k vertices).
 template <int D>
 struct P1Operators {
   /// G, (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|
@@ -37,8 +37,6 @@ struct P1Operators {
   std::vector<Index> offsets;
   std::vector<Index> columns;
   std::vector<double> values;
-  /// Per entry e of row block i and column j: the entry of row block j and column i.
-  std::vector<Index> transposed;
   /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
   /// projection eq. (12)-(14) apply to the components of a nodal field. Empty unless assembled
   /// with_divergence (only the paper-form reference and curvature() need it).
