@@ -174,27 +174,58 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   Candidates<D> cand = leaves_from(forest, 0, o.h_min, o.threads);
   std::vector<double> dist, bound;
   std::vector<Index> nearest;
+  std::vector<Index> witness;  // per forest node: a data point near it, or -1
+  const double largest_local =
+      o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));
   while (!cand.nodes.empty()) {
-    bound.resize(cand.nodes.size());
     progress.update("mesh", std::min(1.0, passes / expected_passes));
-    // A simplex is marked only with a data point closer than its radius + size / grading: the
-    // search for the nearest stops there (exact where it matters, much faster far out).
-    for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
-      const double size = cand.sizes[i];
-      bound[i] = size > o.h_max ? std::numeric_limits<double>::infinity() : cand.radii[i] + size / o.grading;
+    // A simplex is marked when a point is near (within its radius + size / grading) and its size
+    // exceeds that point's local size. Any data point bounds the distance from above: a child
+    // whose parent's witness point is near enough, and larger than every local size, is marked
+    // without a search; it inherits the witness. The others search for their nearest point, only
+    // within that bound (exact where it matters, much faster far out).
+    const std::size_t nc = cand.nodes.size();
+    witness.resize(forest.simplices().size(), -1);
+    std::vector<char> certain(nc, 0);
+    const long ncl = long(nc);
+#pragma omp parallel for schedule(static) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
+    for (long i = 0; i < ncl; ++i) {
+      const double size = cand.sizes[std::size_t(i)];
+      const Index parent = forest.simplices()[cand.nodes[std::size_t(i)]].parent;
+      const Index w = parent >= 0 ? witness[std::size_t(parent)] : -1;
+      if (w < 0 || size <= largest_local) continue;
+      const double upper = (cand.centroids[std::size_t(i)] - data.points()[std::size_t(w)]).norm();
+      certain[std::size_t(i)] = size > o.grading * (upper - cand.radii[std::size_t(i)]) * (1.0 + 1e-12);
     }
-    data.query_within(cand.centroids, bound, dist, nearest, o.threads);
+    Points<D> searched;
+    bound.clear();
+    for (std::size_t i = 0; i < nc; ++i) {
+      if (certain[i]) continue;
+      searched.push_back(cand.centroids[i]);
+      bound.push_back(cand.sizes[i] > o.h_max ? std::numeric_limits<double>::infinity()
+                                              : cand.radii[i] + cand.sizes[i] / o.grading);
+    }
+    data.query_within(searched, bound, dist, nearest, o.threads);
     const Index first_new = Index(forest.simplices().size());
     const Index vertices_before = Index(forest.vertices().size());
     double largest_marked = 0.0;
     std::vector<Index> marked;
-    for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
+    for (std::size_t i = 0, q = 0; i < nc; ++i) {
+      const Index node = cand.nodes[i];
       const double size = cand.sizes[i];
-      const bool near = nearest[i] >= 0;  // a point within the bound
-      const double dist_lower = near ? std::max(0.0, dist[i] - cand.radii[i]) : 0.0;
-      const double local = !near || o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[i]]);
-      if (size > o.h_max || (near && size > local && size > o.grading * dist_lower)) {
-        marked.push_back(cand.nodes[i]);
+      bool mark = true;
+      if (certain[i]) {
+        witness[std::size_t(node)] = witness[std::size_t(forest.simplices()[node].parent)];
+      } else {
+        const bool near = nearest[q] >= 0;  // a point within the bound
+        const double dist_lower = near ? std::max(0.0, dist[q] - cand.radii[i]) : 0.0;
+        const double local = !near || o.point_size.empty() ? o.h_min : std::max(o.h_min, o.point_size[nearest[q]]);
+        mark = size > o.h_max || (near && size > local && size > o.grading * dist_lower);
+        witness[std::size_t(node)] = nearest[q];
+        ++q;
+      }
+      if (mark) {
+        marked.push_back(node);
         largest_marked = std::max(largest_marked, size);
       }
     }

@@ -161,6 +161,7 @@ void KuhnBisectionForest<D>::bisect(Index s, Index z) {
   ForestSimplex<D> c1;
   c0.tag = c1.tag = std::uint8_t(g > 1 ? g - 1 : D);
   c0.level = c1.level = std::uint8_t(parent.level + 1);
+  c0.parent = c1.parent = s;
   for (int i = 0; i <= D; ++i) {
     if (i < g) {
       c0.v[i] = parent.v[i];

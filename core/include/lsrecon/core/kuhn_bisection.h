@@ -29,6 +29,7 @@ template <int D>
 struct ForestSimplex {
   std::array<Index, D + 1> v{};  ///< vertices in Maubach order: refinement edge (v[0], v[tag])
   Index first_child = -1;        ///< children are first_child and first_child + 1; -1: a leaf
+  Index parent = -1;             ///< -1 for a Kuhn root
   std::uint8_t tag = D;
   std::uint8_t level = 0;  ///< bisections since its Kuhn root
 };
