@@ -109,6 +109,27 @@ Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, dou
   return c;
 }
 
+// Any data point bounds the distance from above: a candidate whose parent's witness point is
+// within its marking distance, and which is larger than every local size, is marked whatever
+// its nearest point (it inherits the witness).
+template <int D>
+std::vector<char> certainly_marked(const KuhnBisectionForest<D>& forest, const Candidates<D>& cand,
+                                   const std::vector<Index>& witness, const Points<D>& points, double grading,
+                                   double largest_local, int threads) {
+  const long n = long(cand.nodes.size());
+  std::vector<char> certain(cand.nodes.size(), 0);
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (long i = 0; i < n; ++i) {
+    const std::size_t c = std::size_t(i);
+    const Index parent = forest.simplices()[cand.nodes[c]].parent;
+    const Index w = parent >= 0 ? witness[std::size_t(parent)] : -1;
+    if (w < 0 || cand.sizes[c] <= largest_local) continue;
+    const double upper = (cand.centroids[c] - points[std::size_t(w)]).norm();
+    certain[c] = cand.sizes[c] > grading * (upper - cand.radii[c]) * (1.0 + 1e-12);
+  }
+  return certain;
+}
+
 // The size most of the data asks for: what the size predictions assume (h_min alone would
 // over-predict a mesh whose sizes follow a coarser local sampling).
 double typical_size(const AdaptiveMeshOptions& o) {
@@ -180,23 +201,12 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   while (!cand.nodes.empty()) {
     progress.update("mesh", std::min(1.0, passes / expected_passes));
     // A simplex is marked when a point is near (within its radius + size / grading) and its size
-    // exceeds that point's local size. Any data point bounds the distance from above: a child
-    // whose parent's witness point is near enough, and larger than every local size, is marked
-    // without a search; it inherits the witness. The others search for their nearest point, only
-    // within that bound (exact where it matters, much faster far out).
+    // exceeds that point's local size. Children certain to be marked skip the search; the others
+    // search for their nearest point only within that bound (exact where it matters, much
+    // faster far out).
     const std::size_t nc = cand.nodes.size();
     witness.resize(forest.simplices().size(), -1);
-    std::vector<char> certain(nc, 0);
-    const long ncl = long(nc);
-#pragma omp parallel for schedule(static) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
-    for (long i = 0; i < ncl; ++i) {
-      const double size = cand.sizes[std::size_t(i)];
-      const Index parent = forest.simplices()[cand.nodes[std::size_t(i)]].parent;
-      const Index w = parent >= 0 ? witness[std::size_t(parent)] : -1;
-      if (w < 0 || size <= largest_local) continue;
-      const double upper = (cand.centroids[std::size_t(i)] - data.points()[std::size_t(w)]).norm();
-      certain[std::size_t(i)] = size > o.grading * (upper - cand.radii[std::size_t(i)]) * (1.0 + 1e-12);
-    }
+    const std::vector<char> certain = certainly_marked(forest, cand, witness, data.points(), o.grading, largest_local, o.threads);
     Points<D> searched;
     bound.clear();
     for (std::size_t i = 0; i < nc; ++i) {
