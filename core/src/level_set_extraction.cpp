@@ -31,30 +31,63 @@ bool even_permutation(const std::array<int, N>& p) {
   return inversions % 2 == 0;
 }
 
-// The output vertices: one per crossed mesh edge (a < b), numbered in the order of a, then b,
-// so that each vertex finds its edges' numbers from its own neighbour list, in parallel.
+// The output vertices: one per crossed mesh edge (a < b), numbered in the order of a, then b.
+// The crossed edges are listed per block of simplices, bucketed by a (a counting sort), then
+// each bucket is sorted and made unique on its own: in parallel, without a hash map.
 template <int D>
 class EdgeVertices {
  public:
-  EdgeVertices(const SimplexMesh<D>& mesh, const std::vector<double>& u, const VertexNeighbours& g, double margin,
-               int threads, LevelSetMesh<D>& out)
-      : u_(u), g_(g), first_(u.size() + 1, 0) {
+  EdgeVertices(const SimplexMesh<D>& mesh, const std::vector<double>& u, long block, double margin, int threads,
+               LevelSetMesh<D>& out)
+      : first_(u.size() + 1, 0) {
+    const long ns = long(mesh.simplices.size());
+    const long blocks = (ns + block - 1) / block;
+    std::vector<std::vector<std::pair<Index, Index>>> edges(static_cast<std::size_t>(blocks));
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long k = 0; k < blocks; ++k) {
+      for (long s = k * block; s < std::min(ns, (k + 1) * block); ++s) {
+        const auto& v = mesh.simplices[std::size_t(s)];
+        for (int i = 0; i <= D; ++i) {
+          for (int j = 0; j <= D; ++j) {
+            if (v[i] < v[j] && negative(u[v[i]]) != negative(u[v[j]])) edges[std::size_t(k)].push_back({v[i], v[j]});
+          }
+        }
+      }
+    }
+    std::vector<Index> start(u.size() + 1, 0);
+    for (const auto& list : edges) {
+      for (const auto& e : list) ++start[std::size_t(e.first) + 1];
+    }
+    for (std::size_t a = 0; a < u.size(); ++a) start[a + 1] += start[a];
+    ends_.resize(std::size_t(start.back()));
+    {
+      std::vector<Index> fill(start.begin(), start.end() - 1);
+      for (const auto& list : edges) {
+        for (const auto& e : list) ends_[std::size_t(fill[std::size_t(e.first)]++)] = e.second;
+      }
+    }
     const long nv = long(u.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (long a = 0; a < nv; ++a) first_[std::size_t(a) + 1] = Index(crossed_above(Index(a), g.offsets[a + 1]));
+    for (long a = 0; a < nv; ++a) {
+      auto first = ends_.begin() + start[std::size_t(a)], last = ends_.begin() + start[std::size_t(a) + 1];
+      std::sort(first, last);
+      first_[std::size_t(a) + 1] = Index(std::unique(first, last) - first);
+    }
     for (std::size_t a = 0; a < u.size(); ++a) first_[a + 1] += first_[a];
-    out.vertices.resize(std::size_t(first_.back()));
-    out.sources.resize(std::size_t(first_.back()));
+    // Packed: row a holds its unique ends at first_[a] ..
+    for (std::size_t a = 0; a < u.size(); ++a) {
+      std::copy_n(ends_.begin() + start[a], first_[a + 1] - first_[a], ends_.begin() + first_[a]);
+    }
+    ends_.resize(std::size_t(first_.back()));
+    out.vertices.resize(ends_.size());
+    out.sources.resize(ends_.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (long a = 0; a < nv; ++a) {
-      Index k = first_[std::size_t(a)];
-      for (Index e = g.offsets[a]; e < g.offsets[a + 1]; ++e) {
-        const Index b = g.neighbours[e];
-        if (b < a || !crosses(Index(a), b)) continue;
-        double t = u[a] / (u[a] - u[b]);  // opposite signs: the denominator is not 0
-        out.sources[k] = {Index(a), b, std::clamp(t, margin, 1.0 - margin)};
-        out.vertices[k] = edge_point_position(mesh, out.sources[k]);
-        ++k;
+      for (Index k = first_[std::size_t(a)]; k < first_[std::size_t(a) + 1]; ++k) {
+        const Index b = ends_[std::size_t(k)];
+        const double t = u[a] / (u[a] - u[b]);  // opposite signs: the denominator is not 0
+        out.sources[std::size_t(k)] = {Index(a), b, std::clamp(t, margin, 1.0 - margin)};
+        out.vertices[std::size_t(k)] = edge_point_position(mesh, out.sources[std::size_t(k)]);
       }
     }
   }
@@ -62,23 +95,13 @@ class EdgeVertices {
   // The output vertex on the crossed mesh edge (a, b).
   Index at(Index a, Index b) const {
     if (a > b) std::swap(a, b);
-    const Index* row = g_.neighbours.data();
-    const Index e = Index(std::lower_bound(row + g_.offsets[a], row + g_.offsets[a + 1], b) - row);
-    return first_[std::size_t(a)] + Index(crossed_above(a, e));
+    const auto first = ends_.begin() + first_[std::size_t(a)], last = ends_.begin() + first_[std::size_t(a) + 1];
+    return first_[std::size_t(a)] + Index(std::lower_bound(first, last, b) - first);
   }
 
  private:
-  bool crosses(Index a, Index b) const { return negative(u_[a]) != negative(u_[b]); }
-  // Crossed edges (a, b) with b > a among a's neighbours before position `end`.
-  int crossed_above(Index a, Index end) const {
-    int n = 0;
-    for (Index e = g_.offsets[a]; e < end; ++e) n += g_.neighbours[e] > a && crosses(a, g_.neighbours[e]);
-    return n;
-  }
-
-  const std::vector<double>& u_;
-  const VertexNeighbours& g_;
-  std::vector<Index> first_;
+  std::vector<Index> first_;  // #V + 1: the crossed edges (a, .) are first_[a] .. first_[a + 1] - 1
+  std::vector<Index> ends_;   // their other ends b, sorted per a
 };
 
 // Facets of a simplex: 0, 1 (a lone vertex) or, in 3D, 2 (a quad).
@@ -139,7 +162,7 @@ void march(const SimplexMesh<D>& mesh, const std::vector<double>& u, const EdgeV
 
 template <int D>
 LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u, double edge_margin,
-                                       const VertexNeighbours* neighbours, int threads) {
+                                       int threads) {
   if (u.size() != mesh.vertices.size()) {
     throw InvalidInput("level set field has " + std::to_string(u.size()) + " values for " +
                            std::to_string(mesh.vertices.size()) + " mesh vertices",
@@ -152,11 +175,10 @@ LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::ve
     }
   }
   threads = threads > 0 ? threads : omp_get_max_threads();
-  const VertexNeighbours own = neighbours ? VertexNeighbours() : vertex_neighbours(mesh, threads);
-  LevelSetMesh<D> out;
-  const EdgeVertices<D> edges(mesh, u, neighbours ? *neighbours : own, std::clamp(edge_margin, 1e-9, 0.25), threads, out);
   // Facets in simplex order: counted per fixed block of simplices, then written in parallel.
   constexpr long kBlock = 16384;
+  LevelSetMesh<D> out;
+  const EdgeVertices<D> edges(mesh, u, kBlock, std::clamp(edge_margin, 1e-9, 0.25), threads, out);
   const long ns = long(mesh.simplices.size());
   const long blocks = (ns + kBlock - 1) / kBlock;
   std::vector<Index> first(std::size_t(blocks) + 1, 0);
@@ -212,9 +234,7 @@ std::vector<std::vector<Index>> closed_loops(const LevelSetMesh<2>& curves) {
   return loops;
 }
 
-template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, double,
-                                                   const VertexNeighbours*, int);
-template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, double,
-                                                   const VertexNeighbours*, int);
+template LevelSetMesh<2> extract_zero_level_set<2>(const SimplexMesh<2>&, const std::vector<double>&, double, int);
+template LevelSetMesh<3> extract_zero_level_set<3>(const SimplexMesh<3>&, const std::vector<double>&, double, int);
 
 }  // namespace lsr

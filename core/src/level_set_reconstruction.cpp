@@ -376,12 +376,11 @@ std::vector<double> half_longest_edges(const SimplexMesh<D>& mesh, const VertexN
 // points spanning the box, a fit extrapolated past the data) is capped just inside the walls.
 // The capped values are left in `values`: the volume split cuts along the same level set.
 template <int D>
-LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                                       std::vector<double>& values, int threads) {
+LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, std::vector<double>& values, int threads) {
   for (std::size_t v = 0; v < values.size(); ++v) {
     if (on_wall<D>(mesh.vertices[v])) values[v] = std::max(values[v], std::numeric_limits<double>::min());
   }
-  return extract_zero_level_set(mesh, values, kOutputEdgeMargin, &neighbours, threads);
+  return extract_zero_level_set(mesh, values, kOutputEdgeMargin, threads);
 }
 
 // The inside and outside meshes, sharing the output surface, when asked for.
@@ -398,11 +397,11 @@ void attach_volume(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const
 
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
 template <int D>
-void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                  const P1Operators<D>& ops, const Eigen::VectorXd& u, double level, bool volume, int threads) {
+void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
+                  const Eigen::VectorXd& u, double level, bool volume, int threads) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
-  r.surface = extract_closed_surface(mesh, neighbours, values, threads);
+  r.surface = extract_closed_surface(mesh, values, threads);
   attach_volume(r, mesh, values, volume);
   const Eigen::VectorXd g = ops.gradient_times(u);
   r.normals.resize(r.surface.vertices.size());
@@ -431,8 +430,7 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 template <int D>
-void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<D>& fit,
+void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
                 const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
                 bool over_holes, bool volume, int threads) {
   constexpr double band_factor = 3.0;
@@ -461,7 +459,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
       values[v] = (1.0 - w) * values[v] + w * u[v];
     }
   }
-  r.surface = extract_closed_surface(mesh, neighbours, values, threads);
+  r.surface = extract_closed_surface(mesh, values, threads);
   r.normals = fit.project(r.surface.vertices, threads);
   attach_volume(r, mesh, values, volume);
 }
@@ -713,11 +711,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, o.hole_radius > 0.0, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, o.hole_radius > 0.0, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, neighbours, ops, best, r.output_level * box.scale(), o.volume_mesh, o.threads);
+    attach_front(r, mesh, ops, best, r.output_level * box.scale(), o.volume_mesh, o.threads);
     clock.end("extract");
   }
   for (auto& x : r.surface.vertices) x = box.from_unit(x);

@@ -226,7 +226,7 @@ RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNei
   threads = threads > 0 ? threads : omp_get_max_threads();
   RenormalizationReport<D> report;
   const std::vector<double> values(u.data(), u.data() + u.size());
-  report.front = extract_zero_level_set(mesh, values, 1e-9, &neighbours, threads);
+  report.front = extract_zero_level_set(mesh, values, 1e-9, threads);
   if (report.front.facets.empty()) return report;
 
   Closest c{std::vector<double>(mesh.vertices.size(), kInfinity), std::vector<Index>(mesh.vertices.size(), -1)};

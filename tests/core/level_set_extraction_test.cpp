@@ -144,15 +144,14 @@ TEST(LevelSetExtraction, ZerosOnMeshVerticesCountAsPositive) {
 }
 
 // Vertices numbered by their edges and facets in simplex order: the same surface whatever the
-// thread count, and whether the caller passes the mesh's neighbours or not.
+// thread count.
 TEST(LevelSetExtraction, IsTheSameOnAnyNumberOfThreads) {
   const Sphere s{Vec<3>(0.5, 0.5, 0.5), 0.3};
   const testing::SampledField<3> f =
       testing::sampled_field<3>(s.sample(4000), 1.0 / 32, [&](const Vec<3>& x) { return s.signed_distance(x); });
   const SimplexMesh<3>& mesh = f.adaptive.mesh;
-  const VertexNeighbours g = vertex_neighbours(mesh);
-  const LevelSetMesh<3> one = extract_zero_level_set(mesh, f.values, 1e-9, &g, 1);
-  const LevelSetMesh<3> two = extract_zero_level_set(mesh, f.values, 1e-9, nullptr, 2);
+  const LevelSetMesh<3> one = extract_zero_level_set(mesh, f.values, 1e-9, 1);
+  const LevelSetMesh<3> two = extract_zero_level_set(mesh, f.values, 1e-9, 2);
   ASSERT_GT(one.facets.size(), 1000u);
   EXPECT_TRUE(one.facets == two.facets);
   EXPECT_TRUE(one.vertices == two.vertices);

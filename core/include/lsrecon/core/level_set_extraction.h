@@ -46,13 +46,11 @@ bool split_quad_along_02(const Vec<D>& q0, const Vec<D>& q1, const Vec<D>& q2, c
 /// @param edge_margin output vertices stay this fraction of their edge (clamped to
 /// [1e-9, 0.25]) away from its ends: a mesh vertex just off the level set otherwise makes
 /// output vertices closer than any weld tolerance (seen at 200k points).
-/// @param neighbours the mesh's vertex_neighbours(), or nullptr to compute them here
 /// @param threads 0 for all cores
 /// @throw InvalidInput if u has the wrong size or a non-finite value.
 template <int D>
 LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::vector<double>& u,
-                                       double edge_margin = 1e-9, const VertexNeighbours* neighbours = nullptr,
-                                       int threads = 0);
+                                       double edge_margin = 1e-9, int threads = 0);
 
 /// @brief Orders the segments of a 2D zero set into closed loops, each a list of vertex
 /// indices in order (the last joins the first). The negative side is on the left: outer
