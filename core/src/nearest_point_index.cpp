@@ -10,8 +10,8 @@
 #include <flann/flann.hpp>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 
 #include <omp.h>
 
