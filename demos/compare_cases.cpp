@@ -14,7 +14,8 @@ CompareCase make_case(const std::string& name, int n, const SamplingVariant& var
   c.points = sample.points;
   c.normals = sample.normals;
   c.sdf = shape.sdf;
-  c.truth = sample_implicit_surface(shape.sdf, shape.lo, shape.hi, 100000, 7);
+  Points<3> truth_normals;
+  sample_shape_surface(shape, 100000, 7, c.truth, truth_normals);
   c.diagonal = sample.diagonal;
   c.genus = shape.genus;
   return c;

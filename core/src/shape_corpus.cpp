@@ -3,7 +3,9 @@
 #include "lsrecon/core/shape_corpus.h"
 
 #include "lsrecon/core/errors.h"
+#include "lsrecon/core/facet_mesh_distance.h"
 #include "lsrecon/core/nearest_point_index.h"
+#include "stanford_bunny.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,13 +53,57 @@ std::function<double(const Vec<3>&)> trefoil_tube(double r) {
 
 TestShape shape(std::string name, std::function<double(const Vec<3>&)> sdf, Vec<3> lo, Vec<3> hi,
                 std::vector<int> genus, std::string description) {
-  return TestShape{std::move(name), std::move(sdf), lo, hi, std::move(genus), std::move(description)};
+  TestShape s;
+  s.name = std::move(name);
+  s.sdf = std::move(sdf);
+  s.lo = lo;
+  s.hi = hi;
+  s.genus = std::move(genus);
+  s.description = std::move(description);
+  return s;
 }
+
+TestShape bunny() {
+  Points<3> vertices;
+  for (const auto& v : kBunnyVertices) vertices.emplace_back(v[0], v[1], v[2]);
+  std::vector<std::array<Index, 3>> triangles;
+  for (const auto& t : kBunnyTriangles) triangles.push_back({Index(t[0]), Index(t[1]), Index(t[2])});
+  auto distance = std::make_shared<TriangleMeshDistance>(vertices, triangles);
+  TestShape s = shape("bunny", [distance](const Vec<3>& p) { return distance->signed_distance(p); },
+                      Vec<3>(-5.1, -0.1, -3.9), Vec<3>(5.1, 9.8, 3.9), {0},
+                      "the Stanford bunny (closed, 3,674 triangles): thin ears");
+  s.mesh_vertices = std::move(vertices);
+  s.mesh_triangles = std::move(triangles);
+  return s;
+}
+
+// Area-uniform points of a triangle mesh with the triangles' unit normals.
+void sample_triangles(const Points<3>& v, const std::vector<std::array<Index, 3>>& triangles, int n,
+                      std::uint64_t seed, Points<3>& points, Points<3>& normals) {
+  std::vector<double> cumulative_area;
+  double total = 0.0;
+  for (const auto& t : triangles) {
+    total += 0.5 * (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm();
+    cumulative_area.push_back(total);
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < n; ++i) {
+    const double pick = unit(rng) * total;
+    const auto f = std::size_t(std::upper_bound(cumulative_area.begin(), cumulative_area.end(), pick) - cumulative_area.begin());
+    const auto& t = triangles[std::min(f, triangles.size() - 1)];
+    // Uniform on the triangle: the square root folds the unit square onto it.
+    const double r = std::sqrt(unit(rng)), s = unit(rng);
+    points.push_back((1.0 - r) * v[t[0]] + r * (1.0 - s) * v[t[1]] + r * s * v[t[2]]);
+    normals.push_back((v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).normalized());
+  }
+}
+
 
 }  // namespace
 
 std::vector<std::string> test_shape_names() {
-  return {"sphere", "torus", "double-torus", "triple-torus", "trefoil", "linked-rings", "cup", "limb", "two-spheres"};
+  return {"sphere", "torus", "double-torus", "triple-torus", "trefoil", "linked-rings", "cup", "limb", "two-spheres", "bunny"};
 }
 
 TestShape make_test_shape(const std::string& name) {
@@ -119,6 +165,7 @@ TestShape make_test_shape(const std::string& name) {
                  },
                  Vec<3>(-2.2, -1.1, -1.1), Vec<3>(2.2, 1.1, 1.1), {0, 0}, "two unit spheres 0.12 apart");
   }
+  if (name == "bunny") return bunny();
   std::string names;
   for (const auto& n : test_shape_names()) names += (names.empty() ? "" : ", ") + n;
   throw InvalidInput("unknown test shape '" + name + "'", "use one of " + names);
@@ -168,13 +215,25 @@ Points<3> sample_implicit_surface(const std::function<double(const Vec<3>&)>& sd
   return out;
 }
 
+void sample_shape_surface(const TestShape& shape, int n, std::uint64_t seed, Points<3>& points, Points<3>& normals) {
+  points.clear();
+  normals.clear();
+  if (!shape.mesh_triangles.empty()) {
+    sample_triangles(shape.mesh_vertices, shape.mesh_triangles, n, seed, points, normals);
+    return;
+  }
+  points = sample_implicit_surface(shape.sdf, shape.lo, shape.hi, n, seed);
+  for (const auto& p : points) normals.push_back(sdf_normal(shape.sdf, p));
+}
+
 SampledShape sample_test_shape(const TestShape& shape, int n, const SamplingVariant& v, std::uint64_t seed) {
   SampledShape s;
   std::mt19937_64 rng(seed ^ 0x9e3779b97f4a7c15ULL);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> gauss(0.0, 1.0);
   // The diagonal and the hole centres come from a first sample, independent of the variant.
-  const Points<3> probe = sample_implicit_surface(shape.sdf, shape.lo, shape.hi, 2000, seed + 1);
+  Points<3> probe, batch, batch_normals;
+  sample_shape_surface(shape, 2000, seed + 1, probe, batch_normals);
   Vec<3> lo = probe[0], hi = probe[0];
   for (const auto& p : probe) {
     lo = lo.cwiseMin(p);
@@ -185,8 +244,9 @@ SampledShape sample_test_shape(const TestShape& shape, int n, const SamplingVari
   const double hole = v.hole_radius * s.diagonal;
   std::uint64_t batch_seed = seed;
   while (int(s.points.size()) < n) {
-    for (const auto& p : sample_implicit_surface(shape.sdf, shape.lo, shape.hi, std::max(1000, n), batch_seed++)) {
-      if (int(s.points.size()) == n) break;
+    sample_shape_surface(shape, std::max(1000, n), batch_seed++, batch, batch_normals);
+    for (std::size_t i = 0; i < batch.size() && int(s.points.size()) < n; ++i) {
+      const Vec<3>& p = batch[i];
       bool keep = true;
       for (const auto& h : holes) keep = keep && (p - h).norm() >= hole;
       // Keep with probability falling linearly from 1 to 1 / ratio along x.
@@ -194,7 +254,7 @@ SampledShape sample_test_shape(const TestShape& shape, int n, const SamplingVari
         keep = keep && unit(rng) < 1.0 - (1.0 - 1.0 / v.density_ratio) * (hi.x() - p.x()) / (hi.x() - lo.x());
       }
       if (!keep) continue;
-      s.normals.push_back(sdf_normal(shape.sdf, p));
+      s.normals.push_back(batch_normals[i]);
       s.points.push_back(v.noise > 0.0 ? Vec<3>(p + v.noise * s.diagonal * Vec<3>(gauss(rng), gauss(rng), gauss(rng))) : p);
     }
   }

@@ -8,6 +8,7 @@
 
 #include "lsrecon/core/types.h"
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -22,12 +23,16 @@ struct TestShape {
   Vec<3> lo, hi;            ///< a box containing the surface
   std::vector<int> genus;   ///< per component, sorted ascending: the topology to recover
   std::string description;
+  /// For a shape given as a closed triangle mesh (sdf is then its signed distance): the mesh,
+  /// sampled directly. Empty for implicit shapes.
+  Points<3> mesh_vertices;
+  std::vector<std::array<Index, 3>> mesh_triangles;
 };
 
 /// @brief sphere, torus, double-torus (genus 2), triple-torus (genus 3: two tori crossing
 /// twice), trefoil (a knotted tube), linked-rings (two components, genus 1 each), cup (a
 /// thin-walled cup, genus 0), limb (a ball with a 10:1 thin limb), two-spheres (two components
-/// 4% of the diagonal apart).
+/// 4% of the diagonal apart), bunny (the Stanford bunny's closed mesh: thin ears, genus 0).
 /// @throw InvalidInput for an unknown name (the message lists the names).
 TestShape make_test_shape(const std::string& name);
 
@@ -60,6 +65,11 @@ SampledShape sample_test_shape(const TestShape& shape, int n, const SamplingVari
 /// shell's volume per area is 2 delta (1 + delta^2 K / 3), uniform to O(delta^2 K).
 Points<3> sample_implicit_surface(const std::function<double(const Vec<3>&)>& sdf, const Vec<3>& lo,
                                   const Vec<3>& hi, int n, std::uint64_t seed);
+
+/// @brief n i.i.d. area-uniform points of the shape's surface with their true outward normals:
+/// from its triangles for a mesh shape, else sample_implicit_surface() and sdf_normal().
+/// Deterministic for a given seed.
+void sample_shape_surface(const TestShape& shape, int n, std::uint64_t seed, Points<3>& points, Points<3>& normals);
 
 /// @brief Unit outward normal of {sdf = 0} at p (central differences).
 Vec<3> sdf_normal(const std::function<double(const Vec<3>&)>& sdf, const Vec<3>& p);
