@@ -95,36 +95,50 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool wit
 template <int D>
 VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads) {
   const std::size_t nv = mesh.vertices.size();
-  // Rows first hold every (vertex, other vertex of one of its simplices) pair, duplicates
-  // included; each row is then sorted, made unique and packed.
-  std::vector<Index> start(nv + 1, 0);
+  // The simplices around each vertex; then per vertex, in parallel, the distinct other vertices
+  // of those simplices (a per-thread stamp marks the ones already listed), sorted. Twice: once
+  // to count the rows, once to fill them.
+  std::vector<Index> ball_start(nv + 1, 0);
   for (const auto& simplex : mesh.simplices) {
-    for (Index v : simplex) start[v + 1] += D;
+    for (Index v : simplex) ++ball_start[std::size_t(v) + 1];
   }
-  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-  std::vector<Index> all(start[nv]);
-  std::vector<Index> fill(start.begin(), start.end() - 1);
-  for (const auto& simplex : mesh.simplices) {
-    for (Index v : simplex) {
-      for (Index w : simplex) {
-        if (w != v) all[fill[v]++] = w;
-      }
+  for (std::size_t v = 0; v < nv; ++v) ball_start[v + 1] += ball_start[v];
+  std::vector<Index> around(static_cast<std::size_t>(ball_start[nv]));
+  {
+    std::vector<Index> fill(ball_start.begin(), ball_start.end() - 1);
+    for (Index s = 0; s < Index(mesh.simplices.size()); ++s) {
+      for (Index v : mesh.simplices[std::size_t(s)]) around[std::size_t(fill[std::size_t(v)]++)] = s;
     }
-  }
-  std::vector<Index> unique_count(nv);
-  const long n = long(nv);
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
-  for (long v = 0; v < n; ++v) {
-    auto first = all.begin() + start[v], last = all.begin() + start[v + 1];
-    std::sort(first, last);
-    unique_count[v] = Index(std::unique(first, last) - first);
   }
   VertexNeighbours g;
   g.offsets.assign(nv + 1, 0);
-  for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] = g.offsets[v] + unique_count[v];
-  g.neighbours.resize(g.offsets[nv]);
-  for (std::size_t v = 0; v < nv; ++v) {
-    std::copy_n(all.begin() + start[v], unique_count[v], g.neighbours.begin() + g.offsets[v]);
+  const long n = long(nv);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] += g.offsets[v];
+      g.neighbours.resize(std::size_t(g.offsets[nv]));
+    }
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+    {
+      std::vector<Index> stamp(nv, -1), row;
+#pragma omp for schedule(static)
+      for (long v = 0; v < n; ++v) {
+        row.clear();
+        for (Index k = ball_start[std::size_t(v)]; k < ball_start[std::size_t(v) + 1]; ++k) {
+          for (Index w : mesh.simplices[std::size_t(around[std::size_t(k)])]) {
+            if (w == Index(v) || stamp[std::size_t(w)] == Index(v)) continue;
+            stamp[std::size_t(w)] = Index(v);
+            row.push_back(w);
+          }
+        }
+        if (pass == 0) {
+          g.offsets[std::size_t(v) + 1] = Index(row.size());
+        } else {
+          std::sort(row.begin(), row.end());
+          std::copy(row.begin(), row.end(), g.neighbours.begin() + g.offsets[std::size_t(v)]);
+        }
+      }
+    }
   }
   return g;
 }
