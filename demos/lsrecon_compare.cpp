@@ -58,6 +58,7 @@ struct Settings {
   int points = 20000;
   lsr::SamplingVariant variant;
   double hole_radius = 0.0;  ///< lsrecon's hole_radius option
+  double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
 };
 
 const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
@@ -183,6 +184,7 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c,
     ls.setInputCloud(xyz);
     lsr::ReconstructionOptions options;
     options.hole_radius = s.hole_radius;
+    options.max_resolution = s.max_resolution;
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
@@ -344,7 +346,7 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   command << self << " --run " << case_name << '/' << method << " --out '" << s.out << "'"
           << (s.input.empty() ? "" : " --input '" + s.input + "'") << " --points " << s.points << " --noise "
           << s.variant.noise << " --holes " << s.variant.holes << " --density-ratio " << s.variant.density_ratio
-          << " --hole-radius " << s.hole_radius << " 2>/dev/null";
+          << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution << " 2>/dev/null";
   FILE* pipe = popen(command.str().c_str(), "r");
   std::string row;
   char buffer[4096];
@@ -427,7 +429,9 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .number("noise", "S", s.variant.noise, 0, 0.5, "Gaussian noise, times the diagonal")
       .number("holes", "N", s.variant.holes, 0, 100, "unsampled caps")
       .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x");
-  line.group("lsrecon").number("hole-radius", "H", s.hole_radius, 0, 0.49, "lsrecon's --hole-radius");
+  line.group("lsrecon")
+      .number("hole-radius", "H", s.hole_radius, 0, 0.49, "lsrecon's --hole-radius")
+      .number("max-resolution", "R", s.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)");
   line.group("internal").text("run", "CASE/METHOD", run, "run one case in this process (the parent run does)");
   line.parse(argc, argv, 0, 0, "no positional argument");
   if (cases != "all") s.cases = split(cases);
