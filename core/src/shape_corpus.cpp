@@ -99,7 +99,6 @@ void sample_triangles(const Points<3>& v, const std::vector<std::array<Index, 3>
   }
 }
 
-
 }  // namespace
 
 std::vector<std::string> test_shape_names() {
