@@ -327,6 +327,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"status", status},
                  {"converged", r.status == lsr::ReconstructionStatus::converged},
                  {"residual_input_units", r.residual},
+                 {"residual_history_input_units", r.residual_history},
                  {"tolerance_input_units", r.tolerance},
                  {"unreached_points", r.unreached_points},
                  {"spacing_input_units", r.spacing},
@@ -366,7 +367,7 @@ template <int D>
 std::string not_converged_hint(const lsr::ReconstructionResult<D>& r) {
   std::ostringstream s;
   s.precision(3);
-  if (r.best_iteration == r.iterations) {
+  if (!r.stalled) {
     s << "it was still improving at the last step: raise --max-iterations";
   } else if (r.noise > 0.25 * r.spacing) {  // 4 sigma beyond the tolerance: thousands of points
     s << "the points are noisy or fill a volume (noise " << r.noise << " against a spacing of " << r.spacing

@@ -11,6 +11,7 @@
 #include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/point_validation.h"
 #include "lsrecon/core/renormalization.h"
+#include "lsrecon/core/stall_detection.h"
 #include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/core/unit_box_transform.h"
 
@@ -191,6 +192,9 @@ void check_options(const ReconstructionOptions& o) {
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
+  if (!(o.stall_gain >= 0.0 && o.stall_gain < 1.0)) bad("stall_gain must be in [0, 1)", "use 0.05");
+  if (!(o.near_residual < 1e3)) bad("near_residual must be below 1000", "use a negative value (automatic)");
+  if (!(o.stall_stillness >= 0.0 && o.stall_stillness < 1e3)) bad("stall_stillness must be in [0, 1000)", "use 0.01 (or 0: off)");
   if (!(o.unreached_fraction >= 0.0 && o.unreached_fraction < 1.0)) bad("unreached_fraction must be in [0, 1)", "use 0.01");
   if (!(o.outlier_factor == 0.0 || (o.outlier_factor >= 1.0 && o.outlier_factor <= 1e3))) {
     bad("outlier_factor must be 0 (keep every point) or in [1, 1000]", "use 3");
@@ -638,6 +642,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   std::vector<char> pinned(at.size(), 0), held(nv, 0);
   step.held = &held;
   double first_residual = std::numeric_limits<double>::infinity();
+  StallDetector stall({o.patience, o.stall_gain,
+                       o.near_residual >= 0.0 ? o.near_residual : std::exp(std::abs(step.alpha) * step.time_step),
+                       o.stall_stillness});
+  double front_area = 0.0;  // of the last renormalised front: the displacement's denominator
   double progress_fraction = 0.0;
   Eigen::VectorXd best = u;
   double best_residual = std::numeric_limits<double>::infinity();
@@ -647,15 +655,18 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     for (int n = 1; n <= o.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
       SolverReport solve;
+      const Eigen::VectorXd before = u;
       u = semi_implicit_step(ops, o.two_sided ? two_sided_drive(ops, d, away_from_data, u) : d, u, step, &solve);
+      const double displacement = front_displacement(before, u, ops.ball_measure, scale, D, front_area);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
       if (o.pin_reached_data && !o.two_sided) pin_reached_data(at, cells, u, step.alpha, reach, pinned, d, held);
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on.
-        front_distance = max_front_distance(renormalize(mesh, neighbours, u, band, o.threads).front,
-                                            d, front_tolerance);
+        const RenormalizationReport<D> renormalized = renormalize(mesh, neighbours, u, band, o.threads);
+        front_distance = max_front_distance(renormalized.front, d, front_tolerance);
+        front_area = front_measure(renormalized.front);
         clock.end("renormalize");
       }
       const std::vector<double> per_point = data_residuals(at, u, eps);
@@ -688,7 +699,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
         r.status = ReconstructionStatus::converged;
         break;
       }
-      if (n - r.best_iteration >= o.patience) {
+      r.stalled = stall.stalled(best_residual, r.best_iteration == n, displacement);
+      if (r.stalled) {
         // Stalled: the front no longer gets closer to the last points. Curvature holds it short
         // of the tip of a sharp concave crease, pinned cells short of a slit between close
         // sheets; the fit places the surface there. A few such points do not make the run fail.

@@ -77,7 +77,7 @@ std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front
 template <int D>
 std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
                                     const Closest& c, const std::vector<char>& changed, Index w) {
-  std::array<Index, 48> tried{};
+  std::array<Index, 48> tried;  // only the first n_tried are read
   int n_tried = 0;
   double best = c.distance[w];
   Index best_facet = c.facet[w];
@@ -182,33 +182,42 @@ void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const Fro
   }
 }
 
+// Jacobi rounds from the seeded vertices until no closest facet changes within the band. The
+// candidates of a round (neighbours of the vertices changed in the last one) are marked in
+// parallel and listed in index order, which keeps the memory walks local.
 template <int D>
 void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front, double band,
                std::vector<Index> changed, Closest& c, int threads) {
+  const long nv = long(mesh.vertices.size());
   std::vector<char> listed(mesh.vertices.size(), 0), is_changed(mesh.vertices.size(), 0);
   std::vector<Index> candidates;
   std::vector<std::pair<double, Index>> offer;
   while (!changed.empty()) {
-    candidates.clear();
-    for (Index v : changed) is_changed[v] = 1;
-    for (Index v : changed) {
+    const long nc = long(changed.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long i = 0; i < nc; ++i) {
+      const Index v = changed[i];
+      is_changed[v] = 1;
       for (Index k = g.offsets[v]; k < g.offsets[v + 1]; ++k) {
-        const Index w = g.neighbours[k];
-        if (!listed[w]) {
-          listed[w] = 1;
-          candidates.push_back(w);
-        }
+#pragma omp atomic write
+        listed[g.neighbours[k]] = 1;
       }
+    }
+    candidates.clear();
+    for (long w = 0; w < nv; ++w) {
+      if (listed[w]) candidates.push_back(Index(w));
     }
     offer.resize(candidates.size());
     const long n = long(candidates.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
-    for (long i = 0; i < n; ++i) offer[i] = best_offer(mesh, g, front, c, is_changed, candidates[i]);
+    for (long i = 0; i < n; ++i) {
+      offer[i] = best_offer(mesh, g, front, c, is_changed, candidates[i]);
+      listed[candidates[i]] = 0;
+    }
     for (Index v : changed) is_changed[v] = 0;
     changed.clear();
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const Index w = candidates[i];
-      listed[w] = 0;
       const auto [d, f] = offer[i];
       if (f == c.facet[w] || d >= band) continue;
       c.distance[w] = d;

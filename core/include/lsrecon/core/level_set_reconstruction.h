@@ -95,7 +95,15 @@ struct ReconstructionOptions {
   /// default dt (half the dominant cost, same accuracy on sphere, torus and star) and 1 for
   /// large steps (at |alpha| dt = 0.78, k = 2 left islands; measured).
   int renormalization_interval = 0;
-  int patience = 5;  ///< stop after this many steps without a better residual (noisy data)
+  /// Stalled fronts (stall_detection.h): stop after `patience` steps without a better
+  /// residual, or when over the last `patience` steps the front moved less than
+  /// stall_stillness local spacings on average while its best residual fell by less than the
+  /// fraction stall_gain or was already within near_residual tolerances (negative:
+  /// exp(|alpha| dt), one free step from converging). stall_stillness 0: only the first rule.
+  int patience = 5;
+  double stall_gain = 0.05;       ///< see patience
+  double near_residual = -1.0;    ///< see patience
+  double stall_stillness = 0.01;  ///< see patience
   /// A run whose front stalled (patience ran out) with at most this fraction of the points
   /// beyond their tolerance, and the front within its tolerance of the data everywhere,
   /// counts as converged; ReconstructionResult::unreached_points says how many.
@@ -161,6 +169,7 @@ struct ReconstructionResult {
   std::vector<std::vector<Index>> loops;  ///< 2D only: closed loops in order
   int iterations = 0;               ///< time steps taken
   int best_iteration = 0;           ///< the step whose u is returned
+  bool stalled = false;             ///< stopped by the stall rules (see patience), not by max_iterations
   /// Worst distance between data and front at best_iteration relative to its local tolerance,
   /// times `tolerance`: input units, and converged exactly when residual <= tolerance.
   double residual = 0.0;
