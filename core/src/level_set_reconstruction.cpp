@@ -14,6 +14,7 @@
 #include "lsrecon/core/stall_detection.h"
 #include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/core/unit_box_transform.h"
+#include "lsrecon/core/z_order.h"
 
 #include <Eigen/Eigenvalues>
 #include <omp.h>
@@ -468,6 +469,25 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
   attach_volume(r, mesh, values, volume);
 }
 
+// The points (and their input indices) along a Z-order curve: a point's neighbours then lie
+// near it in memory. In scanner or i.i.d. order every neighbourhood query of the sampling, the
+// fit and the point location misses the cache (measured on 1M random bunny points: kd-tree 0.5
+// -> 0.15 s, sampling 2.0 -> 1.2 s, the fits' construction 4.8 -> 2.4 s). 3D only: 2D clouds are
+// mostly pixel lattices, small, and full of equidistant neighbours among which the order decides
+// (the all-black test image's outline came out as 3 loops in Z-order instead of 1).
+template <int D>
+void in_z_order(const UnitBoxTransform<D>& box, Points<D>& points, std::vector<std::size_t>& kept) {
+  const std::vector<Index> order = z_order<D>(box.to_unit(points));
+  Points<D> sorted(points.size());
+  std::vector<std::size_t> sorted_kept(kept.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    sorted[i] = points[std::size_t(order[i])];
+    sorted_kept[i] = kept[std::size_t(order[i])];
+  }
+  points = std::move(sorted);
+  kept = std::move(sorted_kept);
+}
+
 template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
@@ -486,6 +506,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.skipped_points = input.size() - points.size();
   require_spanning(points);
   auto box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
+  if constexpr (D == 3) in_z_order(box, points, kept);
   NearestPointIndex<D> data(box.to_unit(points));
   clock.end("unit box");
 
