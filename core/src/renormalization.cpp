@@ -30,6 +30,33 @@ double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p, in
   }
 }
 
+// A ball around each facet (centroid, farthest corner): |p - centre| - radius bounds the
+// distance from below, so most offers that cannot win skip the exact distance. The radius is
+// padded so that rounding never lets the bound pass the computed distance.
+template <int D>
+struct FacetBalls {
+  std::vector<Vec<D>> centre;
+  std::vector<double> radius;
+  FacetBalls(const LevelSetMesh<D>& front, int threads) : centre(front.facets.size()), radius(front.facets.size()) {
+    const long nf = long(front.facets.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long f = 0; f < nf; ++f) {
+      Vec<D> c = Vec<D>::Zero();
+      for (Index v : front.facets[f]) c += front.vertices[v];
+      c /= double(D);
+      double r = 0.0;
+      for (Index v : front.facets[f]) r = std::max(r, (front.vertices[v] - c).norm());
+      centre[f] = c;
+      radius[f] = r * (1.0 + 1e-9) + 1e-12 * c.norm();
+    }
+  }
+  // True when facet f is certainly farther from p than `best`.
+  bool farther(Index f, const Vec<D>& p, double best) const {
+    const double lower = (p - centre[f]).norm() - radius[f];
+    return lower > best * (1.0 + 1e-12);
+  }
+};
+
 // The nearest facet so far of every vertex; ties go to the lower facet index.
 struct Closest {
   std::vector<double> distance;
@@ -39,33 +66,42 @@ struct Closest {
   }
 };
 
-// The vertices of the crossed simplices: both ends of the mesh edge under every front vertex
-// measured against the facets through that front vertex, whatever the band (they carry the
-// zero set). Returns the seeded vertices.
+// The distinct ends of the mesh edges under facet f's vertices: all lie in one simplex, so at
+// most D + 1; unused entries -1.
+template <int D>
+std::array<Index, D + 1> facet_ends(const LevelSetMesh<D>& front, Index f) {
+  std::array<Index, D + 1> ends;
+  ends.fill(-1);
+  int count = 0;
+  for (Index k : front.facets[f]) {
+    for (Index v : {front.sources[k].a, front.sources[k].b}) {
+      if (count <= D && std::find(ends.begin(), ends.begin() + count, v) == ends.begin() + count) ends[count++] = v;
+    }
+  }
+  return ends;
+}
+
+// The vertices of the crossed simplices: the ends of the mesh edges under every facet
+// measured against that facet, whatever the band (they carry the zero set). Returns the
+// seeded vertices.
 template <int D>
 std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, Closest& c, int threads) {
   const long nf = long(front.facets.size());
-  std::vector<std::array<double, 2 * D>> d(front.facets.size());
+  std::vector<std::array<double, D + 1>> d(front.facets.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (long f = 0; f < nf; ++f) {
-    for (int k = 0; k < D; ++k) {
-      const EdgePoint& e = front.sources[front.facets[f][k]];
-      d[f][2 * k] = facet_distance(front, Index(f), mesh.vertices[e.a]);
-      d[f][2 * k + 1] = facet_distance(front, Index(f), mesh.vertices[e.b]);
-    }
+    const auto ends = facet_ends(front, Index(f));
+    for (int i = 0; i <= D && ends[i] >= 0; ++i) d[f][i] = facet_distance(front, Index(f), mesh.vertices[ends[i]]);
   }
   std::vector<Index> seeded;
   for (Index f = 0; f < Index(nf); ++f) {
-    for (int k = 0; k < D; ++k) {
-      const EdgePoint& e = front.sources[front.facets[f][k]];
-      for (int end = 0; end < 2; ++end) {
-        const Index v = end == 0 ? e.a : e.b;
-        const double dv = d[f][2 * k + end];
-        if (!c.improves(v, dv, f)) continue;
-        if (c.facet[v] < 0) seeded.push_back(v);
-        c.distance[v] = dv;
-        c.facet[v] = f;
-      }
+    const auto ends = facet_ends(front, f);
+    for (int i = 0; i <= D && ends[i] >= 0; ++i) {
+      const Index v = ends[i];
+      if (!c.improves(v, d[f][i], f)) continue;
+      if (c.facet[v] < 0) seeded.push_back(v);
+      c.distance[v] = d[f][i];
+      c.facet[v] = f;
     }
   }
   std::sort(seeded.begin(), seeded.end());
@@ -76,7 +112,8 @@ std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front
 // round (each facet measured once).
 template <int D>
 std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
-                                    const Closest& c, const std::vector<char>& changed, Index w) {
+                                    const FacetBalls<D>& balls, const Closest& c, const std::vector<char>& changed,
+                                    Index w) {
   std::array<Index, 48> tried;  // only the first n_tried are read
   int n_tried = 0;
   double best = c.distance[w];
@@ -86,6 +123,7 @@ std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeig
     const Index f = c.facet[g.neighbours[k]];
     if (f < 0 || f == best_facet || std::find(tried.begin(), tried.begin() + n_tried, f) != tried.begin() + n_tried) continue;
     if (n_tried < int(tried.size())) tried[n_tried++] = f;
+    if (balls.farther(f, mesh.vertices[w], best)) continue;
     const double d = facet_distance(front, f, mesh.vertices[w]);
     if (d < best || (d == best && f < best_facet)) {
       best = d;
@@ -146,8 +184,8 @@ FrontAdjacency<D> front_adjacency(const LevelSetMesh<D>& front, int threads) {
 // is a corner of the facet, to the facets around that corner (a side walk can stop there
 // while a facet through the corner is closer).
 template <int D>
-void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const FrontAdjacency<D>& adjacency, Closest& c,
-             int threads) {
+void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const FrontAdjacency<D>& adjacency,
+             const FacetBalls<D>& balls, Closest& c, int threads) {
   const long n = long(mesh.vertices.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (long w = 0; w < n; ++w) {
@@ -157,6 +195,7 @@ void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const Fro
     int corner = -1;
     double best = facet_distance(front, f, p, &corner);
     auto offer = [&](Index g) {
+      if (balls.farther(g, p, best)) return;
       int g_corner = -1;
       const double d = facet_distance(front, g, p, &g_corner);
       if (d < best) {
@@ -186,8 +225,8 @@ void descend(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, const Fro
 // candidates of a round (neighbours of the vertices changed in the last one) are marked in
 // parallel and listed in index order, which keeps the memory walks local.
 template <int D>
-void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front, double band,
-               std::vector<Index> changed, Closest& c, int threads) {
+void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
+               const FacetBalls<D>& balls, double band, std::vector<Index> changed, Closest& c, int threads) {
   const long nv = long(mesh.vertices.size());
   std::vector<char> listed(mesh.vertices.size(), 0), is_changed(mesh.vertices.size(), 0);
   std::vector<Index> candidates;
@@ -211,7 +250,7 @@ void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const Leve
     const long n = long(candidates.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
     for (long i = 0; i < n; ++i) {
-      offer[i] = best_offer(mesh, g, front, c, is_changed, candidates[i]);
+      offer[i] = best_offer(mesh, g, front, balls, c, is_changed, candidates[i]);
       listed[candidates[i]] = 0;
     }
     for (Index v : changed) is_changed[v] = 0;
@@ -239,8 +278,9 @@ RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNei
   if (report.front.facets.empty()) return report;
 
   Closest c{std::vector<double>(mesh.vertices.size(), kInfinity), std::vector<Index>(mesh.vertices.size(), -1)};
-  propagate(mesh, neighbours, report.front, band, seed(mesh, report.front, c, threads), c, threads);
-  descend(mesh, report.front, front_adjacency(report.front, threads), c, threads);
+  const FacetBalls<D> balls(report.front, threads);
+  propagate(mesh, neighbours, report.front, balls, band, seed(mesh, report.front, c, threads), c, threads);
+  descend(mesh, report.front, front_adjacency(report.front, threads), balls, c, threads);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     // Beyond the band (or cut off from the front, which a connected mesh never is): +-band.
     const double d = c.facet[i] >= 0 ? c.distance[i] : (std::isfinite(band) ? band : std::abs(u[i]));
