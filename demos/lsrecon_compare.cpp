@@ -57,7 +57,7 @@ struct Settings {
   std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson8-lsrecon", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
   int points = 20000;
   lsr::SamplingVariant variant;
-  double hole_radius = 0.0;  ///< lsrecon's hole_radius option
+  double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
 };
 
@@ -430,7 +430,7 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .number("holes", "N", s.variant.holes, 0, 100, "unsampled caps")
       .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x");
   line.group("lsrecon")
-      .number("hole-radius", "H", s.hole_radius, 0, 0.49, "lsrecon's --hole-radius")
+      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "lsrecon's --hole-radius")
       .number("max-resolution", "R", s.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)");
   line.group("internal").text("run", "CASE/METHOD", run, "run one case in this process (the parent run does)");
   line.parse(argc, argv, 0, 0, "no positional argument");

@@ -133,7 +133,7 @@ Cli parse(int argc, char** argv) {
       .number("max-iterations", "N", s.max_iterations, 1, 1e7, "time steps at most")
       .number("tolerance", "EPS", s.tolerance, 0, 0.5, "stop when data and front are this close; 0 = one local sampling spacing")
       .number("renormalization-interval", "K", s.renormalization_interval, 0, 1000, "renormalise every K steps; 0 = automatic")
-      .number("hole-radius", "H", s.hole_radius, 0, 0.49, "span sampling holes up to radius H with tangent discs (README: Sampling holes); slower on noisy data");
+      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (README: Sampling holes); -1 = 0.06 in 3D, off in 2D; 0 = off");
   line.group("data and result")
       .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
             format_number(s.outlier_factor) + " local spacings); by default they are left out")

@@ -189,7 +189,7 @@ void check_options(const ReconstructionOptions& o) {
   factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 2 (local scales)");
   factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local scales)");
   factor(o.curvature_factor, "curvature_factor", -1e-300, 100.0, "use 0.25");
-  if (!(o.hole_radius >= 0.0 && o.hole_radius < 0.5)) bad("hole_radius must be in [0, 0.5) (unit box)", "use 0 (no closing) or e.g. 0.06");
+  if (!(o.hole_radius < 0.5)) bad("hole_radius must be below 0.5 (unit box)", "use -1 (automatic), 0 (no closing) or e.g. 0.06");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.patience < 1) bad("patience must be at least 1", "use 5");
@@ -437,7 +437,7 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
                 const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
-                bool over_holes, bool volume, int threads) {
+                const std::vector<char>& over_hole, bool volume, int threads) {
   constexpr double band_factor = 3.0;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
@@ -456,10 +456,12 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
     const Index v = band_vertices[k];
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
     values[v] = trusted ? f[k] : u[v];
-    // Over a spanned hole the front lies on the rims' discs, where the fit only extrapolates:
-    // from the gap to one spacing beyond it the front takes over, gradually, so that the two
-    // zero sets join without a step (measured: switching opened small handles at holes).
-    if (over_holes) {
+    // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
+    // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
+    // front takes over, gradually, so that the two zero sets join without a step (measured:
+    // switching opened small handles at holes). Elsewhere the fit alone decides (measured: a
+    // handover in the neck between the noisy two spheres left a third component).
+    if (!over_hole.empty() && over_hole[std::size_t(v)]) {
       const double w = std::clamp((distance[v] - trust_factor * scale[v]) / scale[v], 0.0, 1.0);
       values[v] = (1.0 - w) * values[v] + w * u[v];
     }
@@ -511,14 +513,18 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("unit box");
 
   progress.update("sampling", -1.0);
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads, o.hole_radius > 0.0);
+  const double hole_radius = o.hole_radius >= 0.0 ? o.hole_radius : D == 3 ? kAutomaticHoleRadius : 0.0;
+  // Discs on the rims only in 3D: in 2D a curve's every point is its own rim.
+  const bool rims_only = D == 3;
+  const HeightFieldsAt fields = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads, fields);
   if (drop_isolated(sampling, o.outlier_factor, points, kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - points.size();
     require_spanning(points);
     box = UnitBoxTransform<D>::fit_ball(points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(points));
-    sampling = estimate_local_sampling(data, o.threads, o.hole_radius > 0.0);
+    sampling = estimate_local_sampling(data, o.threads, fields);
   }
   r.noise = median(sampling.noise);
   r.spacing = median(sampling.spacing);
@@ -611,16 +617,19 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const double band = o.initial_front == InitialFront::tagged && !custom_start
                           ? (4.0 + o.gap_factor) * scale.maxCoeff()
                           : std::numeric_limits<double>::infinity();
-  if (o.hole_radius > 0.0) {
+  std::vector<char> over_hole;  // the discs nearer than the points; empty without discs
+  if (hole_radius > 0.0) {
     // Spanned holes: the front is attracted to the points' tangent discs (tangent_discs.h),
     // wherever a hole's discs can reach and the start's gap (plus a margin) beyond. Within the
     // gap of the data the points themselves attract: there the discs add nothing over a hole,
     // and at a concave crease the tilted PCA planes of the points next to it span the groove
     // less than a gap from its tip (measured: a lid that stalled the double torus's front).
     std::vector<double> cap(nv);
-    for (std::size_t v = 0; v < nv; ++v) cap[v] = (2.0 * o.gap_factor + 1.0) * scale[v] + o.hole_radius;
-    const std::vector<double> discs = tangent_disc_distance(data, sampling, o.hole_radius,
-                                                            mesh.vertices, dist, cap, o.threads);
+    for (std::size_t v = 0; v < nv; ++v) cap[v] = (2.0 * o.gap_factor + 1.0) * scale[v] + hole_radius;
+    const std::vector<double> discs = tangent_disc_distance(data, sampling, hole_radius,
+                                                            mesh.vertices, dist, cap, o.threads, rims_only);
+    over_hole.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) over_hole[v] = discs[v] < dist[v];
     for (std::size_t v = 0; v < nv; ++v) {
       d[v] = std::min(dist[v], discs[v] + std::max(0.0, o.gap_factor * scale[v] - dist[v]));
     }
@@ -641,7 +650,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     }
   } else if (o.initial_front == InitialFront::tagged) {
     const std::vector<double> guard =
-        o.hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + o.hole_radius).matrix())
+        hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + hole_radius).matrix())
                             : std::vector<double>();
     u = tagged_start(mesh, neighbours, d, distance, scale, guard, o.gap_factor, band, o.threads);
     r.tagged_start = u.size() > 0;
@@ -744,7 +753,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, o.hole_radius > 0.0, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

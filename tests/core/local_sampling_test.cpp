@@ -72,7 +72,7 @@ TEST(LocalSampling, CurvatureOfRandomSphereSamplesConvergesLikeTheSquaredNeighbo
   const TestShape sphere = make_test_shape("sphere");  // R = 1
   double previous = 0.0;
   for (const int n : {2000, 20000}) {
-    const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(sample_test_shape(sphere, n).points), 0, true);
+    const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(sample_test_shape(sphere, n).points), 0, HeightFieldsAt::all);
     std::vector<double> error;
     for (const HeightField<3>& f : s.height_fields) error.push_back(std::abs(f.largest_curvature() - 1.0));
     const double r2 = 16.0 / (kPi * n / (4 * kPi));

@@ -171,20 +171,20 @@ TEST(RandomReconstruction, IsolatedOutliersAreLeftOutNotWrapped) {
 }
 
 // Four unsampled caps of radius a = 0.2 (2.3 spacings of 4000 points, as 4% of the diagonal is
-// at 20k): without hole_radius the start floods in through them; with it the rims' discs span
-// them and the fit extrapolates the rim quadrics, whose error over a is the quartic term
-// a^4 / (8 R^3) of the tube (R = 0.4).
-TEST(RandomReconstruction, HolesAreSpannedWithTheHoleRadius) {
+// at 20k; 0.057 in the unit box): with hole_radius 0 the start floods in through them; by
+// default (0.06) the rims' discs span them and the fit extrapolates the rim quadrics, whose
+// error over a is the quartic term a^4 / (8 R^3) of the tube (R = 0.4).
+TEST(RandomReconstruction, HolesAreSpannedByDefault) {
   const TestShape shape = make_test_shape("torus");
   SamplingVariant v;
   v.holes = 4;
   v.hole_radius = 0.2 / 4.04;  // of the diagonal, 2 sqrt(1.4^2 + 1.4^2 + 0.4^2)
   const SampledShape sample = sample_test_shape(shape, 4000, v);
-  const Outcome open = run(shape, sample);
+  ReconstructionOptions off;
+  off.hole_radius = 0.0;
+  const Outcome open = run(shape, sample, off);
   EXPECT_FALSE(open.topology.watertight && open.genus == std::vector<int>{1});
-  ReconstructionOptions o;
-  o.hole_radius = 1.5 * 0.2 * 0.4 / 1.4;  // 1.5 a in the unit box (bounding ball 0.4 for 1.4)
-  const Outcome spanned = run(shape, sample, o);
+  const Outcome spanned = run(shape, sample);
   EXPECT_EQ(spanned.r.status, ReconstructionStatus::converged);
   EXPECT_TRUE(spanned.topology.watertight);
   EXPECT_EQ(spanned.genus, std::vector<int>{1});

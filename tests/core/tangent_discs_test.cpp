@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -35,7 +36,7 @@ std::vector<double> distances(const NearestPointIndex<3>& data, const Points<3>&
 TEST(TangentDiscs, SpanAHoleNarrowerThanTheirRadiusAndNoWider) {
   const double a = 0.05;  // about 3 spacings of 4000 points on 0.36
   const NearestPointIndex<3> data(holey_plane(0.5, a, 4000, 1));
-  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, HeightFieldsAt::all);
   const Points<3> q = {Vec<3>(0.5, 0.5, 0.5), Vec<3>(0.5, 0.5, 0.51), Vec<3>(0.52, 0.49, 0.48)};
   const std::vector<double> d = distances(data, q);
   const std::vector<double> cap(q.size(), 1.0);
@@ -48,6 +49,45 @@ TEST(TangentDiscs, SpanAHoleNarrowerThanTheirRadiusAndNoWider) {
   EXPECT_GE(open[0], 0.5 * a - 0.02 * a);
 }
 
+TEST(TangentDiscs, RimsRingAHoleAndAreRareInsideASurface) {
+  // 32 neighbours of 4000 points on 0.36 reach r32 = sqrt(32 / (pi 4000 / 0.36)) = 0.030. A rim
+  // point sees 120 degrees free among its 31 nearest: a point within about a spacing of the
+  // hole's edge (the hole subtends more), a point inside with probability about
+  // 31 (2/3)^30 = 1.6e-4 (the largest of 31 random gaps): 0.6 of 4000, 3 of 20000 expected.
+  const double a = 0.05, r32 = 0.030;
+  const Points<3> p = holey_plane(0.5, a, 4000, 1);
+  const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(p), 0, HeightFieldsAt::rims);
+  std::vector<int> sectors(12, 0);
+  int inside = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!s.rim[i]) continue;
+    const double from_hole = std::hypot(p[i].x() - 0.5, p[i].y() - 0.5) - a;
+    const double from_border = std::min({p[i].x() - 0.2, 0.8 - p[i].x(), p[i].y() - 0.2, 0.8 - p[i].y()});
+    if (from_hole < r32) ++sectors[std::size_t(6.0 * (std::atan2(p[i].y() - 0.5, p[i].x() - 0.5) / M_PI + 1.0)) % 12];
+    if (std::min(from_hole, from_border) > r32) ++inside;
+  }
+  // Every 30 degrees of the rim (2.7 spacings of arc) has a rim point: their discs meet over it.
+  for (int k = 0; k < 12; ++k) EXPECT_GE(sectors[std::size_t(k)], 1) << "no rim point in sector " << k;
+  EXPECT_LE(inside, 4);  // P(Poisson(0.6) > 4) = 5e-4
+  // Closed: a random sphere has no rim but the rare wide gaps.
+  const Points<3> sphere = sample_test_shape(make_test_shape("sphere"), 20000).points;
+  const LocalSampling<3> closed = estimate_local_sampling(NearestPointIndex<3>(sphere), 0, HeightFieldsAt::rims);
+  EXPECT_LE(std::count(closed.rim.begin(), closed.rim.end(), 1), 12);  // P(Poisson(3.2) > 12) = 3e-5
+}
+
+TEST(TangentDiscs, RimDiscsAloneSpanAHole) {
+  const double a = 0.05;
+  const NearestPointIndex<3> data(holey_plane(0.5, a, 4000, 1));
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, HeightFieldsAt::rims);
+  const Points<3> q = {Vec<3>(0.5, 0.5, 0.5), Vec<3>(0.5, 0.5, 0.51), Vec<3>(0.52, 0.49, 0.48)};
+  const std::vector<double> d = distances(data, q);
+  const std::vector<double> cap(q.size(), 1.0);
+  const std::vector<double> covered = tangent_disc_distance(data, s, 1.5 * a, q, d, cap, 0, true);
+  for (std::size_t i = 0; i < q.size(); ++i) EXPECT_NEAR(covered[i], std::abs(q[i].z() - 0.5), 1e-9) << i;
+  const std::vector<double> open = tangent_disc_distance(data, s, 0.5 * a, q, d, cap, 0, true);
+  EXPECT_GE(open[0], 0.5 * a - 0.02 * a);
+}
+
 TEST(TangentDiscs, FollowTheCurvatureAcrossAHole) {
   // A cap of angular radius 0.15 missing from a random unit sphere: flat discs of radius 0.2
   // would pass 0.15^2 / 2 ~ 0.011 above its pole; bent ones by the quartic term only.
@@ -57,7 +97,7 @@ TEST(TangentDiscs, FollowTheCurvatureAcrossAHole) {
     if (std::acos(std::clamp(x.z(), -1.0, 1.0)) > 0.15) p.push_back(x);
   }
   const NearestPointIndex<3> data(p);
-  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, HeightFieldsAt::all);
   const Points<3> pole = {Vec<3>(0.0, 0.0, 1.0)};
   const std::vector<double> d = distances(data, pole);
   ASSERT_GT(d[0], 0.14);
@@ -74,7 +114,7 @@ TEST(TangentDiscs, LeaveTheGapBetweenCloseSheetsOpen) {
   const Points<3> upper = holey_plane(0.53, 0.0, 3000, 3);
   p.insert(p.end(), upper.begin(), upper.end());
   const NearestPointIndex<3> data(p);
-  const LocalSampling<3> s = estimate_local_sampling(data, 0, true);
+  const LocalSampling<3> s = estimate_local_sampling(data, 0, HeightFieldsAt::all);
   const Points<3> middle = {Vec<3>(0.5, 0.5, 0.515), Vec<3>(0.3, 0.6, 0.515)};
   const std::vector<double> d = distances(data, middle);
   const std::vector<double> discs = tangent_disc_distance(data, s, 0.2, middle, d, {1.0, 1.0});

@@ -44,6 +44,11 @@ enum class InitialFront {
 /// (tolerance_factor s). A front spanning a gap of radius r between samples is held there
 /// when beta (D - 1) / r >= alpha d ~ alpha r, i.e. r <= sqrt((D - 1) curvature_factor) s;
 /// beyond, only the pinned cells of radius pin_factor s hold it.
+/// The widest sampling hole spanned by default in 3D (unit box, where the data's bounding ball
+/// has radius 0.4): the radius of the holes of the test corpus (4% of the diagonal) and a
+/// margin.
+inline constexpr double kAutomaticHoleRadius = 0.06;
+
 struct ReconstructionOptions {
   /// Finest mesh size; 0: local, max(s_i, 1.5 noise_i) near each point, clamped to
   /// [1/max_resolution, 1/64] (2D) or [1/max_resolution, 1/32] (3D). > 0: this size everywhere
@@ -73,13 +78,14 @@ struct ReconstructionOptions {
   /// and the front may lie this far from the data between samples. A random surface sample's
   /// largest empty disc is about 1.45 s at 2e5 points (local_sampling.h); 2 leaves a margin.
   double gap_factor = 2.0;
-  /// 0 (off) by default: span sampling holes up to this radius (unit box), as Poisson does.
-  /// Each point's tangent disc of this radius (at most its radius of curvature), bent to the
-  /// quadric fitted to its neighbours, stops the tagged start and attracts the front beyond
-  /// the gap of the data (tangent_discs.h): the rims of a hole continue over it, while close
-  /// sheets and creases are left as the points say. Costs a radius query per mesh vertex near
-  /// the data (README.md has the measurements).
-  double hole_radius = 0.0;
+  /// Span sampling holes up to this radius (unit box), as Poisson does; 0: off; negative
+  /// (default): kAutomaticHoleRadius in 3D, off in 2D. The points on the rim of a hole (or of
+  /// an open scan; LocalSampling::rim) carry tangent discs of this radius (at most their radius
+  /// of curvature), bent to the quadric fitted to their neighbours: they stop the tagged start
+  /// and attract the front beyond the gap of the data (tangent_discs.h), so the rim continues
+  /// over the hole, while close sheets and creases, which have no rim, are left as the points
+  /// say (README.md has the measurements).
+  double hole_radius = -1.0;
   double pin_factor = 2.0;  ///< radius (in local spacings) of the cell a reached point pins
   /// dt; 0: 0.2 / |alpha|. The front closes in on the data like exp(-alpha t), and the
   /// explicit data term's CFL limit on the graded mesh (sizes ~ c d) is about c / alpha, so dt

@@ -82,6 +82,11 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// the holes their removal leaves let the front in (README.md, "Outliers").
   void setStatisticalOutlierFilter(int mean_k, double stddev_mul) { statistical_ = {mean_k, stddev_mul}; }
   const lsr::adapters::StatisticalOutlierFilter& getStatisticalOutlierFilter() const { return statistical_; }
+  /// @brief Widest sampling hole spanned, in the unit box (the cloud's bounding ball has radius
+  /// 0.4); negative (the default): 0.06 in 3D, none in 2D; 0: none, the front enters through
+  /// holes (lsr::ReconstructionOptions::hole_radius).
+  void setHoleRadius(double radius) { options_.hole_radius = radius; }
+  double getHoleRadius() const { return options_.hole_radius; }
   /// @brief Coarsest mesh size in the unit box (lsr::ReconstructionOptions::h_max).
   void setMaximumSize(double h_max) { options_.h_max = h_max; }
   double getMaximumSize() const { return options_.h_max; }
