@@ -514,7 +514,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   progress.update("sampling", -1.0);
   const double hole_radius = o.hole_radius >= 0.0 ? o.hole_radius : D == 3 ? kAutomaticHoleRadius : 0.0;
-  // Discs on the rims only in 3D: in 2D a curve's every point is its own rim.
+  // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
+  // unless asked for, every point does.
   const bool rims_only = D == 3;
   const HeightFieldsAt fields = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
   LocalSampling<D> sampling = estimate_local_sampling(data, o.threads, fields);
@@ -619,7 +620,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                           : std::numeric_limits<double>::infinity();
   std::vector<char> over_hole;  // the discs nearer than the points; empty without discs
   if (hole_radius > 0.0) {
-    // Spanned holes: the front is attracted to the points' tangent discs (tangent_discs.h),
+    // Spanned holes: the front is attracted to the tangent discs (tangent_discs.h),
     // wherever a hole's discs can reach and the start's gap (plus a margin) beyond. Within the
     // gap of the data the points themselves attract: there the discs add nothing over a hole,
     // and at a concave crease the tilted PCA planes of the points next to it span the groove

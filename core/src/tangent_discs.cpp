@@ -42,7 +42,7 @@ std::vector<double> tangent_disc_distance(const NearestPointIndex<D>& data, cons
   // The points that carry a disc, indexed apart when they are the rims only.
   std::vector<Index> carrier;
   for (std::size_t i = 0; i < data.points().size(); ++i) {
-    if (!rims_only || sampling.rim[i]) carrier.push_back(Index(i));
+    if (!rims_only || (i < sampling.rim.size() && sampling.rim[i])) carrier.push_back(Index(i));
   }
   std::vector<double> out(point_distance);
   if (carrier.empty()) return out;
