@@ -77,7 +77,8 @@ HeightField<D> fit_height_field(const Points<D>& p, const Index* nearest, int k,
 // side; 2 pi / (k - 1) on average inside. In 2D: pi at the end of a curve (all on one side),
 // else 0.
 template <int D>
-double largest_angular_gap(const Points<D>& p, const Index* nearest, int k, std::size_t i, const Vec<D>& normal) {
+double largest_angular_gap(const Points<D>& p, const Index* nearest, int k, std::size_t i, const Vec<D>& normal,
+                           Vec<D>* middle = nullptr) {
   const Eigen::Matrix<double, D, D> frame = tangent_frame(normal);
   double angle[32];
   int n = 0;
@@ -88,10 +89,19 @@ double largest_angular_gap(const Points<D>& p, const Index* nearest, int k, std:
   }
   if (n == 0) return 2.0 * M_PI;
   std::sort(angle, angle + n);
-  if constexpr (D == 2) return angle[0] == angle[n - 1] ? M_PI : 0.0;
-  double gap = angle[0] + 2.0 * M_PI - angle[n - 1];
-  for (int j = 1; j < n; ++j) gap = std::max(gap, angle[j] - angle[j - 1]);
-  return gap;
+  if constexpr (D == 2) {
+    return angle[0] == angle[n - 1] ? M_PI : 0.0;
+  } else {
+    double gap = angle[0] + 2.0 * M_PI - angle[n - 1], from = angle[n - 1];
+    for (int j = 1; j < n; ++j) {
+      if (angle[j] - angle[j - 1] > gap) {
+        gap = angle[j] - angle[j - 1];
+        from = angle[j - 1];
+      }
+    }
+    if (middle) *middle = frame.transpose() * Vec<D>(std::cos(from + 0.5 * gap), std::sin(from + 0.5 * gap), 0.0);
+    return gap;
+  }
 }
 
 // The mean |cos| between p_i's normal and its neighbours': about 1 on a smooth surface, less
@@ -129,10 +139,25 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
   std::vector<Index> nearest;
   data.query_k(candidates, kw, nearest, threads);
   const long n = long(which.size());
+  // The open side must be empty beyond the neighbourhood too: a point one neighbourhood radius
+  // r into it, along the middle of the gap, at least r / 2 from the data (about r inside a hole
+  // of radius >= r; a wide gap among random samples closes within about a spacing).
+  Points<D> inside(which.size());
+  std::vector<double> radius(which.size(), 0.0), bound(which.size()), empty;
+  std::vector<Index> found;
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (long c = 0; c < n; ++c) {
     const std::size_t i = which[std::size_t(c)];
-    wide[i] = largest_angular_gap(p, &nearest[std::size_t(c) * kw], kw, i, normals[i]) > LocalSampling<D>::kRimGap;
+    const Index* near = &nearest[std::size_t(c) * kw];
+    Vec<D> middle = Vec<D>::Zero();
+    wide[i] = largest_angular_gap(p, near, kw, i, normals[i], &middle) > LocalSampling<D>::kRimGap;
+    radius[c] = (p[near[kw - 1]] - p[i]).norm();
+    inside[c] = p[i] + radius[c] * middle;
+    bound[c] = 0.5 * radius[c];
+  }
+  data.query_within(inside, bound, empty, found, threads);
+  for (long c = 0; c < n; ++c) {
+    if (found[std::size_t(c)] >= 0) wide[which[std::size_t(c)]] = 0;
   }
   std::vector<char> rim(p.size(), 0);
   for (std::size_t i : which) {

@@ -52,8 +52,10 @@ struct LocalSampling {
   std::vector<HeightField<D>> height_fields;
   std::vector<double> gap;      ///< distance to the nearest distinct neighbour, raw (not filtered)
   /// 1 where the kRimNeighbours nearest leave an angle wider than kRimGap free around the point
-  /// in its tangent plane, on a smooth part (kRimSmoothness), with D - 1 more such points among
-  /// its kNeighbours nearest: the rim of a sampling hole or of an open scan. Empty unless height fields are asked for at the rims.
+  /// in its tangent plane, the data stays away from a point one neighbourhood radius r into the
+  /// middle of that gap (farther than r / 2), the part is smooth (kRimSmoothness), and D - 1 more
+  /// such points lie among its kNeighbours nearest: the rim of a sampling hole or of an open
+  /// scan. Empty unless height fields are asked for at the rims.
   std::vector<char> rim;
   static constexpr double kRimGap = 2.09;  ///< radians (120 degrees); pi on a straight rim
   static constexpr int kRimNeighbours = 32;
