@@ -56,9 +56,13 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
   const int k_clean = std::min<int>(kFitNeighbours, int(p.size()));
   const int k_max = std::min<int>(kMaxFitNeighbours, int(p.size()));
   std::vector<int> size(p.size(), k_clean);
+  // 1 - cos of the normal width: the noise widens it as it widens the neighbourhood (normals
+  // scattered by noise are not a crease).
+  std::vector<double> width(p.size(), 1.0 - std::cos(kNormalWidth));
   for (std::size_t i = 0; i < p.size() && !noise.empty(); ++i) {
     const double ratio = noise[i] / (0.05 * std::max(spacing_[i], 1e-300));
     size[i] = int(std::min<double>(k_max, k_clean * (1.0 + ratio * ratio)));
+    width[i] = 1.0 - std::cos(std::min(kPi / 2, kNormalWidth * std::sqrt(1.0 + ratio * ratio)));
   }
   // The wider neighbourhoods in classes of sizes growing by 5/4, each class queried at its
   // largest size: one query for the widest point alone would make every noisy point search as
@@ -99,9 +103,10 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
     Eigen::Matrix<double, kParams, 1> atz = Eigen::Matrix<double, kParams, 1>::Zero();
     const double r2 = std::pow(1.2 * f.reach, 2);
     for (int j = 0; j < k; ++j) {
-      if (normals[near[j]].dot(normals[i]) <= 0.0) continue;  // the other side of a thin part
+      const double cosine = normals[near[j]].dot(normals[i]);
+      if (cosine <= 0.0) continue;  // the other side of a thin part
       const Vec<D> local = f.frame * (p[near[j]] - p[i]);
-      const double w = std::pow(1.0 - local.squaredNorm() / r2, 2);
+      const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) / width[i]);
       const auto m = monomials<D>(local.template head<D - 1>());
       ata += w * m * m.transpose();
       atz += w * local[D - 1] * m;

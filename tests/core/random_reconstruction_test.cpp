@@ -97,7 +97,7 @@ TEST(RandomReconstruction, LinkedRingsStayTwoRingsOfGenusOne) {
 // A scanned shape: creases at every edge of its 3,674 triangles and ears thinner than a spacing
 // at their tips. The fit rounds a crease of angle theta over its reach r ~ 3 s by about
 // r theta / 4, under s / 4 for the bunny's edges (theta < 20 degrees): the mean error, where
-// the knife-edged ear tips, on which the blended tangent planes run on, weigh little.
+// the knife-edged ear tips weigh little.
 TEST(RandomReconstruction, BunnyKeepsItsEarsApartAndGenusZero) {
   const TestShape shape = make_test_shape("bunny");
   const Outcome o = run(shape, sample_test_shape(shape, 5000));
@@ -105,6 +105,10 @@ TEST(RandomReconstruction, BunnyKeepsItsEarsApartAndGenusZero) {
   EXPECT_TRUE(o.topology.watertight && o.topology.edge_manifold && o.topology.vertex_manifold);
   EXPECT_EQ(o.genus, std::vector<int>{0});
   EXPECT_LE(o.distances.chamfer, 0.25 * o.r.spacing);
+  // Solid the fit adds outside the front stays within 2.5 local spacings of the data, which
+  // lies on the surface (measured: 1.7 spacings; 2.4 when the fit's tangent planes ran on
+  // past the ears' tips).
+  EXPECT_LE(o.distances.max_to_truth, 2.5 * o.r.spacing);
 }
 
 TEST(RandomReconstruction, TenfoldDensityGradientKeepsTheTopology) {
