@@ -430,13 +430,46 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
   return n;
 }
 
+// Every solid part of the output must hold some of the front's inside: a part of {values < 0}
+// with no vertex where u < 0 is the fit's extrapolation beyond the data, which the front, tied
+// to the data, never found (measured: a blob of 8 vertices past the knife-edge tip of an ear of
+// the noisy, holey bunny). Such parts take the front's (positive) values.
+template <int D>
+void drop_parts_outside_front(const VertexNeighbours& neighbours, const Eigen::VectorXd& u, std::vector<double>& values) {
+  std::vector<char> seen(values.size(), 0);
+  std::vector<Index> part, stack;
+  for (std::size_t start = 0; start < values.size(); ++start) {
+    if (seen[start] || values[start] >= 0.0) continue;
+    part.clear();
+    stack.assign(1, Index(start));
+    seen[start] = 1;
+    bool founded = false;
+    while (!stack.empty()) {
+      const Index v = stack.back();
+      stack.pop_back();
+      part.push_back(v);
+      founded = founded || u[v] < 0.0;
+      for (Index j = neighbours.offsets[v]; j < neighbours.offsets[v + 1]; ++j) {
+        const Index w = neighbours.neighbours[j];
+        if (!seen[w] && values[w] < 0.0) {
+          seen[w] = 1;
+          stack.push_back(w);
+        }
+      }
+    }
+    if (!founded) {
+      for (Index v : part) values[v] = u[v];
+    }
+  }
+}
+
 // The fitted surface: F replaces u on the band of vertices within band_factor local spacings of
 // the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 template <int D>
-void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const QuadricImplicit<D>& fit,
-                const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
+void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
                 const std::vector<char>& over_hole, bool volume, int threads) {
   constexpr double band_factor = 3.0, kUnsupported = 1.5;
   std::vector<double> values(u.data(), u.data() + u.size());
@@ -477,6 +510,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Qu
       values[v] = (1.0 - w) * values[v] + w * u[v];
     }
   }
+  drop_parts_outside_front<D>(neighbours, u, values);
   r.surface = extract_closed_surface(mesh, values, threads);
   r.normals = fit.project(r.surface.vertices, threads);
   attach_volume(r, mesh, values, volume);
@@ -765,7 +799,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
