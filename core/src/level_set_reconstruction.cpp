@@ -469,8 +469,9 @@ void drop_parts_outside_front(const VertexNeighbours& neighbours, const Eigen::V
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance, double trust_factor,
-                const std::vector<char>& over_hole, bool volume, int threads) {
+                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
+                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole, bool volume,
+                int threads) {
   constexpr double band_factor = 3.0, kUnsupported = 1.5;
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
@@ -489,13 +490,8 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     const Index v = band_vertices[k];
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
     values[v] = trusted ? f[k] : u[v];
-    // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
-    // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
-    // front takes over, gradually, so that the two zero sets join without a step (measured:
-    // switching opened small handles at holes). Elsewhere the fit alone decides (measured: a
-    // handover in the neck between the noisy two spheres left a third component).
     // Solid the fit adds outside the front must be near the data: the surface between random
-    // samples lies within about 1.45 spacings of one (the largest empty disc, "Local spacing").
+    // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h).
     // Where the fit's surface passes farther from the data than that (nearer to v than half
     // v's distance to the data), it extrapolates: the tangent planes of a knife edge's sides
     // run on past its tip (measured on the bunny's ear). From 1.5 to 2.5 spacings the front
@@ -505,6 +501,12 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
       const double w = std::clamp((distance[v] - kUnsupported * scale[v]) / scale[v], 0.0, 1.0);
       values[v] = (1.0 - w) * values[v] + w * u[v];
     }
+    // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
+    // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
+    // front takes over, gradually, so that the two zero sets join without a step (measured:
+    // switching opened small handles at holes). Elsewhere only unsupported solid (above) is
+    // handed over (measured: a handover wherever the fit is far from the data left the noisy
+    // two spheres a third component in their neck).
     if (!over_hole.empty() && over_hole[std::size_t(v)]) {
       const double w = std::clamp((distance[v] - trust_factor * scale[v]) / scale[v], 0.0, 1.0);
       values[v] = (1.0 - w) * values[v] + w * u[v];

@@ -30,13 +30,14 @@ class QuadricImplicit {
   static constexpr int kFitNeighbours = D == 2 ? 10 : 30;
   static constexpr int kMaxFitNeighbours = D == 2 ? 40 : 120;
   static constexpr int kBlendCentres = D == 2 ? 4 : 12;    ///< fits blended at a query
-  /// Normal width of a fit's neighbours on clean data, widened with the neighbourhood on noisy
-  /// data by the factor sqrt(1 + (sigma_i / (0.05 s_i))^2) of the neighbourhood's size (at most
-  /// 90 degrees). Measured on the 20k bunny
-  /// (Chamfer / diagonal): 5 degrees 2.39e-4, 7: 2.43e-4, 10: 2.58e-4, 20: 3.01e-4, none
-  /// 3.73e-4; a smooth part turns by less than 7 degrees across a fit's neighbourhood wherever
-  /// its radius of curvature exceeds about 25 spacings (the fit's neighbours lie within about
-  /// 3), and a fit on a tighter bend still keeps its nearest neighbours.
+  /// Normal width of a fit's neighbours on clean data, widened on noisy data by the factor
+  /// sqrt(1 + (sigma_i / (0.05 s_i))^2) that widens the neighbourhood (at most 90 degrees).
+  /// Measured on the 20k bunny (Chamfer / diagonal): 5 degrees 2.39e-4, 7: 2.43e-4, 10: 2.58e-4,
+  /// 20: 3.01e-4, none 3.73e-4. A smooth part turns by less than 7 degrees across a fit's
+  /// neighbourhood wherever its radius of curvature exceeds about 25 spacings (the neighbours
+  /// lie within about 3), and a fit on a tighter bend still keeps its nearest neighbours. Where
+  /// the other side of a thin part lies among the PCA neighbours (within sqrt(15 / 6) s_i) the
+  /// normals tell no crease, and the fit keeps plain weights.
   static constexpr double kNormalWidth = 7.0 * kPi / 180.0;
 
   /// @param data the points (#N) and their kd-tree
