@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file merge_without_joins.cpp
+#include "lsrecon/core/merge_without_joins.h"
+
+#include "lsrecon/core/outside_flood_fill.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace lsr {
+namespace {
+
+// Union-find over the few (<= ~60) vertices of one link, by position in `link`.
+struct LinkSets {
+  std::vector<Index> link, parent;
+  int slot(Index v) {
+    const auto it = std::find(link.begin(), link.end(), v);
+    if (it != link.end()) return int(it - link.begin());
+    link.push_back(v);
+    parent.push_back(Index(parent.size()));
+    return int(link.size()) - 1;
+  }
+  Index find(Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+// The simplices containing each candidate, CSR by candidate slot.
+template <int D>
+void candidate_stars(const SimplexMesh<D>& mesh, const std::vector<Index>& slot, std::size_t count,
+                     std::vector<Index>& offsets, std::vector<Index>& stars) {
+  offsets.assign(count + 1, 0);
+  for (const auto& s : mesh.simplices) {
+    for (Index v : s) {
+      if (slot[v] >= 0) ++offsets[slot[v] + 1];
+    }
+  }
+  for (std::size_t c = 0; c < count; ++c) offsets[c + 1] += offsets[c];
+  stars.resize(std::size_t(offsets[count]));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
+    for (Index v : mesh.simplices[s]) {
+      if (slot[v] >= 0) stars[fill[slot[v]]++] = Index(s);
+    }
+  }
+}
+
+}  // namespace
+
+template <int D>
+std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const Eigen::VectorXd& width, Eigen::VectorXd& values) {
+  const std::size_t nv = mesh.vertices.size();
+  std::vector<char> member(nv);
+  std::size_t absorbed = 0;
+  for (const bool negative : {true, false}) {
+    for (std::size_t v = 0; v < nv; ++v) member[v] = (values[Eigen::Index(v)] < 0.0) == negative;
+    const std::vector<Index> root = vertex_components<D>(mesh, member);
+    // Per part: bounding box and the widest `width` over its vertices, indexed by root.
+    std::vector<Index> part(nv, -1);
+    std::vector<Vec<D>> low, high;
+    std::vector<double> widest;
+    std::vector<char> walled;
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (root[v] < 0) continue;
+      const Vec<D>& x = mesh.vertices[v];
+      Index& p = part[std::size_t(root[v])];
+      if (p < 0) {
+        p = Index(low.size());
+        low.push_back(x);
+        high.push_back(x);
+        widest.push_back(width[Eigen::Index(v)]);
+        walled.push_back(0);
+      } else {
+        low[p] = low[p].cwiseMin(x);
+        high[p] = high[p].cwiseMax(x);
+        widest[p] = std::max(widest[p], width[Eigen::Index(v)]);
+      }
+      walled[p] = walled[p] || on_wall<D>(x);
+    }
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (root[v] < 0) continue;
+      const Index p = part[std::size_t(root[v])];
+      if (!walled[p] && (high[p] - low[p]).norm() < widest[p]) {
+        double& x = values[Eigen::Index(v)];
+        x = negative ? -x : -std::max(x, std::numeric_limits<double>::min());
+        ++absorbed;
+      }
+    }
+  }
+  return absorbed;
+}
+
+template <int D>
+LinkPieces link_pieces(const SimplexMesh<D>& mesh, const std::vector<Index>& star, Index v,
+                       const std::vector<char>& negative) {
+  thread_local LinkSets sets;
+  sets.link.clear();
+  sets.parent.clear();
+  for (Index s : star) {
+    int others[D], n = 0;
+    for (Index w : mesh.simplices[s]) {
+      if (w != v) others[n++] = sets.slot(w);
+    }
+    for (int i = 0; i < D; ++i) {
+      for (int j = i + 1; j < D; ++j) {
+        if (negative[sets.link[others[i]]] == negative[sets.link[others[j]]]) sets.unite(others[i], others[j]);
+      }
+    }
+  }
+  LinkPieces pieces;
+  for (std::size_t i = 0; i < sets.link.size(); ++i) {
+    if (sets.find(Index(i)) == Index(i)) ++(negative[sets.link[i]] ? pieces.negative : pieces.non_negative);
+  }
+  return pieces;
+}
+
+template <int D>
+std::size_t merge_without_joins(const SimplexMesh<D>& mesh, const Eigen::VectorXd& reference,
+                                std::vector<double>& values, const std::vector<char>& may_join) {
+  const std::size_t nv = values.size();
+  std::vector<char> negative(nv);
+  std::vector<Index> slot(nv, -1), candidates;
+  for (std::size_t v = 0; v < nv; ++v) {
+    negative[v] = reference[Eigen::Index(v)] < 0.0;
+    if (negative[v] != (values[v] < 0.0)) {
+      slot[v] = Index(candidates.size());
+      candidates.push_back(Index(v));
+    }
+  }
+  if (candidates.empty()) return 0;
+  std::vector<Index> offsets, stars;
+  candidate_stars<D>(mesh, slot, candidates.size(), offsets, stars);
+  std::vector<Index> star;
+  const auto star_of = [&](Index c) -> const std::vector<Index>& {
+    star.assign(stars.begin() + offsets[c], stars.begin() + offsets[c + 1]);
+    return star;
+  };
+  // Most confident first; ties by index, so the result does not depend on anything else.
+  using Entry = std::pair<double, Index>;
+  const auto lower_priority = [](const Entry& a, const Entry& b) {
+    return a.first != b.first ? a.first < b.first : a.second > b.second;
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(lower_priority)> queue(lower_priority),
+      changes(lower_priority);
+  for (Index v : candidates) {
+    if (!on_wall<D>(mesh.vertices[v])) queue.emplace(std::abs(values[v]), v);
+  }
+  std::vector<char> flipped(nv, 0);
+  // Whether v may flip; `later`: it changes the topology (a cut or a join), which waits.
+  const auto allowed = [&](Index v, bool& later) {
+    const LinkPieces pieces = link_pieces<D>(mesh, star_of(slot[v]), v, negative);
+    const int own = negative[v] ? pieces.negative : pieces.non_negative;
+    const int other = negative[v] ? pieces.non_negative : pieces.negative;
+    later = own > 1 || other > 1;
+    return other == 1 || (other > 1 && !may_join.empty() && may_join[v]);
+  };
+  const auto flip = [&](Index v) {
+    flipped[v] = 1;
+    negative[v] = !negative[v];
+    for (Index s : star) {  // star_of(v), from allowed(v): their links changed
+      for (Index w : mesh.simplices[s]) {
+        if (slot[w] >= 0 && !flipped[w] && !on_wall<D>(mesh.vertices[w])) queue.emplace(std::abs(values[w]), w);
+      }
+    }
+  };
+  // Cuts and joins wait until no other flip is left: a part moving sideways through a thin
+  // spot is otherwise cut before it regrows on the other side, and may not be joined again.
+  // Then the most confident of them, and what it frees.
+  for (bool changed = true; changed;) {
+    while (!queue.empty()) {
+      const Index v = queue.top().second;
+      queue.pop();
+      bool later = false;
+      if (flipped[v] || !allowed(v, later)) continue;
+      if (later) {
+        changes.emplace(std::abs(values[v]), v);
+      } else {
+        flip(v);
+      }
+    }
+    changed = false;
+    while (!changes.empty() && !changed) {
+      const Index v = changes.top().second;
+      changes.pop();
+      bool later = false;
+      if (flipped[v] || !allowed(v, later)) continue;  // a neighbour's flip will bring it back
+      flip(v);
+      changed = true;
+    }
+  }
+  std::size_t kept = 0;
+  for (Index v : candidates) {
+    if (!flipped[v]) {
+      values[v] = reference[v];
+      ++kept;
+    }
+  }
+  return kept;
+}
+
+template std::size_t absorb_small_parts<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, Eigen::VectorXd&);
+template std::size_t absorb_small_parts<3>(const SimplexMesh<3>&, const Eigen::VectorXd&, Eigen::VectorXd&);
+template LinkPieces link_pieces<2>(const SimplexMesh<2>&, const std::vector<Index>&, Index, const std::vector<char>&);
+template LinkPieces link_pieces<3>(const SimplexMesh<3>&, const std::vector<Index>&, Index, const std::vector<char>&);
+template std::size_t merge_without_joins<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, std::vector<double>&,
+                                            const std::vector<char>&);
+template std::size_t merge_without_joins<3>(const SimplexMesh<3>&, const Eigen::VectorXd&, std::vector<double>&,
+                                            const std::vector<char>&);
+
+}  // namespace lsr
