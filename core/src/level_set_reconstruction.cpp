@@ -441,7 +441,7 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 template <int D>
-void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh,
+void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole, bool volume,
                 int threads) {
@@ -491,16 +491,17 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh,
   // opens handles (measured: the cup with the 10x density gradient and the holey double torus
   // got one each). Far from the data (past the largest empty disc, as above) the front is held
   // by curvature alone and a guess: there the fit may join too (measured: a coarse front
-  // spanned a torus's hole). The front's bubbles and specks narrower than a spacing go first.
+  // spanned a torus's hole). Bubbles and specks narrower than a spacing go last (measured: a
+  // one-vertex void in the noisy, holey limb and one in the cup's wall).
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
   cap_at_walls<D>(mesh, values);
-  absorb_small_parts<D>(mesh, scale, front);
   std::vector<char> may_join(values.size());
   for (std::size_t v = 0; v < values.size(); ++v) {
     may_join[v] = distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
   }
   merge_without_joins<D>(mesh, front, values, may_join);
+  absorb_small_parts<D>(mesh, neighbours, scale, values);
   r.surface = extract_closed_surface(mesh, values, threads);
   r.normals = fit.project(r.surface.vertices, threads);
   attach_volume(r, mesh, values, volume);
@@ -789,7 +790,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

@@ -53,44 +53,44 @@ void candidate_stars(const SimplexMesh<D>& mesh, const std::vector<Index>& slot,
 }  // namespace
 
 template <int D>
-std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const Eigen::VectorXd& width, Eigen::VectorXd& values) {
+std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+                               const Eigen::VectorXd& width, std::vector<double>& values) {
   const std::size_t nv = mesh.vertices.size();
-  std::vector<char> member(nv);
+  const auto near = [&](Index v) { return std::abs(values[v]) < width[v]; };
+  const auto side = [&](Index v) { return values[v] < 0.0; };
+  std::vector<char> seen(nv, 0);
+  std::vector<Index> part;
   std::size_t absorbed = 0;
-  for (const bool negative : {true, false}) {
-    for (std::size_t v = 0; v < nv; ++v) member[v] = (values[Eigen::Index(v)] < 0.0) == negative;
-    const std::vector<Index> root = vertex_components<D>(mesh, member);
-    // Per part: bounding box and the widest `width` over its vertices, indexed by root.
-    std::vector<Index> part(nv, -1);
-    std::vector<Vec<D>> low, high;
-    std::vector<double> widest;
-    std::vector<char> walled;
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (root[v] < 0) continue;
-      const Vec<D>& x = mesh.vertices[v];
-      Index& p = part[std::size_t(root[v])];
-      if (p < 0) {
-        p = Index(low.size());
-        low.push_back(x);
-        high.push_back(x);
-        widest.push_back(width[Eigen::Index(v)]);
-        walled.push_back(0);
-      } else {
-        low[p] = low[p].cwiseMin(x);
-        high[p] = high[p].cwiseMax(x);
-        widest[p] = std::max(widest[p], width[Eigen::Index(v)]);
-      }
-      walled[p] = walled[p] || on_wall<D>(x);
-    }
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (root[v] < 0) continue;
-      const Index p = part[std::size_t(root[v])];
-      if (!walled[p] && (high[p] - low[p]).norm() < widest[p]) {
-        double& x = values[Eigen::Index(v)];
-        x = negative ? -x : -std::max(x, std::numeric_limits<double>::min());
-        ++absorbed;
+  for (std::size_t start = 0; start < nv; ++start) {
+    if (seen[start] || !near(Index(start))) continue;
+    // The part of `start` among the near vertices; narrow if it reaches no far vertex of its
+    // side, no wall, and its box is smaller than the widest width in it.
+    const bool negative = side(Index(start));
+    part.assign(1, Index(start));
+    seen[start] = 1;
+    bool narrow = true;
+    Vec<D> low = mesh.vertices[start], high = low;
+    double widest = 0.0;
+    for (std::size_t k = 0; k < part.size(); ++k) {
+      const Index v = part[k];
+      low = low.cwiseMin(mesh.vertices[v]);
+      high = high.cwiseMax(mesh.vertices[v]);
+      widest = std::max(widest, width[v]);
+      narrow = narrow && !on_wall<D>(mesh.vertices[v]);
+      for (Index j = neighbours.offsets[v]; j < neighbours.offsets[v + 1]; ++j) {
+        const Index w = neighbours.neighbours[j];
+        if (side(w) != negative) continue;
+        if (!near(w)) {
+          narrow = false;
+        } else if (!seen[w]) {
+          seen[w] = 1;
+          part.push_back(w);
+        }
       }
     }
+    if (!narrow || (high - low).norm() >= widest) continue;
+    for (Index v : part) values[v] = negative ? -values[v] : -std::max(values[v], std::numeric_limits<double>::min());
+    absorbed += part.size();
   }
   return absorbed;
 }
@@ -147,10 +147,13 @@ std::size_t merge_without_joins(const SimplexMesh<D>& mesh, const Eigen::VectorX
   };
   std::priority_queue<Entry, std::vector<Entry>, decltype(lower_priority)> queue(lower_priority),
       changes(lower_priority);
+  std::vector<char> flipped(nv, 0), queued(nv, 0);
   for (Index v : candidates) {
-    if (!on_wall<D>(mesh.vertices[v])) queue.emplace(std::abs(values[v]), v);
+    if (!on_wall<D>(mesh.vertices[v])) {
+      queued[v] = 1;
+      queue.emplace(std::abs(values[v]), v);
+    }
   }
-  std::vector<char> flipped(nv, 0);
   // Whether v may flip; `later`: it changes the topology (a cut or a join), which waits.
   const auto allowed = [&](Index v, bool& later) {
     const LinkPieces pieces = link_pieces<D>(mesh, star_of(slot[v]), v, negative);
@@ -164,7 +167,10 @@ std::size_t merge_without_joins(const SimplexMesh<D>& mesh, const Eigen::VectorX
     negative[v] = !negative[v];
     for (Index s : star) {  // star_of(v), from allowed(v): their links changed
       for (Index w : mesh.simplices[s]) {
-        if (slot[w] >= 0 && !flipped[w] && !on_wall<D>(mesh.vertices[w])) queue.emplace(std::abs(values[w]), w);
+        if (slot[w] >= 0 && !flipped[w] && !queued[w] && !on_wall<D>(mesh.vertices[w])) {
+          queued[w] = 1;
+          queue.emplace(std::abs(values[w]), w);
+        }
       }
     }
   };
@@ -175,6 +181,7 @@ std::size_t merge_without_joins(const SimplexMesh<D>& mesh, const Eigen::VectorX
     while (!queue.empty()) {
       const Index v = queue.top().second;
       queue.pop();
+      queued[v] = 0;
       bool later = false;
       if (flipped[v] || !allowed(v, later)) continue;
       if (later) {
@@ -203,8 +210,10 @@ std::size_t merge_without_joins(const SimplexMesh<D>& mesh, const Eigen::VectorX
   return kept;
 }
 
-template std::size_t absorb_small_parts<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, Eigen::VectorXd&);
-template std::size_t absorb_small_parts<3>(const SimplexMesh<3>&, const Eigen::VectorXd&, Eigen::VectorXd&);
+template std::size_t absorb_small_parts<2>(const SimplexMesh<2>&, const VertexNeighbours&, const Eigen::VectorXd&,
+                                           std::vector<double>&);
+template std::size_t absorb_small_parts<3>(const SimplexMesh<3>&, const VertexNeighbours&, const Eigen::VectorXd&,
+                                           std::vector<double>&);
 template LinkPieces link_pieces<2>(const SimplexMesh<2>&, const std::vector<Index>&, Index, const std::vector<char>&);
 template LinkPieces link_pieces<3>(const SimplexMesh<3>&, const std::vector<Index>&, Index, const std::vector<char>&);
 template std::size_t merge_without_joins<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, std::vector<double>&,

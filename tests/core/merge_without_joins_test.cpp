@@ -228,15 +228,14 @@ TEST(MergeWithoutJoins, AbsorbsOnlyPartsNarrowerThanTheWidth) {
   const SimplexMesh<3> mesh = uniform_mesh<3>(40);
   const double h = 1.0 / 40;
   const Vec<3> bubble(0.5, 0.5, 0.3), speck(0.1, 0.1, 0.1);
-  Eigen::VectorXd u = sample<3>(mesh, [&](const Vec<3>& x) {
+  std::vector<double> values = as_vector(sample<3>(mesh, [&](const Vec<3>& x) {
     double f = std::max(ball(x, kCentre, 0.35), -ball(x, Vec<3>(0.5, 0.5, 0.6), 0.1));
     if ((x - bubble).norm() < 1e-9) f = 0.5 * h;
     if ((x - speck).norm() < 1e-9) f = -0.5 * h;
     return f;
-  });
-  const Eigen::VectorXd width = Eigen::VectorXd::Constant(u.size(), 2.0 * h);
-  EXPECT_EQ(absorb_small_parts(mesh, width, u), 2u);
-  const std::vector<double> values = as_vector(u);
+  }));
+  const Eigen::VectorXd width = Eigen::VectorXd::Constant(Eigen::Index(values.size()), 2.0 * h);
+  EXPECT_EQ(absorb_small_parts(mesh, vertex_neighbours(mesh), width, values), 2u);
   EXPECT_EQ(negative_parts(mesh, values), 1u);
   EXPECT_EQ(genus_of(mesh, values), (std::vector<int>{0, 0}));  // the ball and its cavity
 }

@@ -24,16 +24,20 @@
 
 namespace lsr {
 
-/// @brief Turns the parts of {values < 0} and {values >= 0} narrower than the local `width`
-/// (their bounding box's diagonal is shorter than the largest width at their vertices) to the
-/// other sign by negating their values: the front's bubbles and specks below the sampling gap,
-/// which no data can support, before its topology becomes the reference.
+/// @brief Turns the narrow parts of {values < 0} and {values >= 0} to the other sign by
+/// negating their values: bubbles and specks below the sampling gap, which no data can
+/// support (and which the extraction would turn into tiny closed surfaces). `values` must be a signed distance
+/// near its zero set; a part is narrow if all its vertices lie nearer to the zero set than
+/// their `width` and its bounding box's diagonal is shorter than the largest width in it.
+/// Only the vertices nearer than their width are visited.
+/// @param neighbours the mesh's edge graph
 /// @param width #V lengths
 /// @param values #V values, changed in place
 /// @return the number of vertices that changed sign
 /// @note A part that touches the box walls is never narrow: it is the outside.
 template <int D>
-std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const Eigen::VectorXd& width, Eigen::VectorXd& values);
+std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+                               const Eigen::VectorXd& width, std::vector<double>& values);
 
 /// @brief How many connected pieces the negative and the non-negative vertices of v's link form.
 struct LinkPieces {
