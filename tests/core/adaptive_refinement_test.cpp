@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <random>
+
 namespace lsr {
 namespace {
 
@@ -142,6 +146,61 @@ TEST(AdaptiveRefinement, NeighboursAreNearInMemory) {
     const Index lowest = *std::min_element(s.begin(), s.end());
     EXPECT_GE(lowest, previous);
     previous = lowest;
+  }
+}
+
+// The marking rule applied literally: every candidate searches its exact nearest point. The
+// certificates that let build_adaptive_mesh skip searches must not change a single mark.
+KuhnBisectionForest<3> refine_by_exhaustive_search(const NearestPointIndex<3>& data, const AdaptiveMeshOptions& o) {
+  KuhnBisectionForest<3> forest(1 << int(std::ceil(std::log2(1.0 / o.h_max) - 1e-9)));
+  for (Index first = 0; first < Index(forest.simplices().size());) {
+    std::vector<Index> marked;
+    for (Index s = first; s < Index(forest.simplices().size()); ++s) {
+      const double size = forest.size(s);
+      if (!forest.is_leaf(s) || size <= o.h_min) continue;
+      Vec<3> c = Vec<3>::Zero();
+      for (Index v : forest.simplices()[s].v) c += forest.vertices()[v];
+      c /= 4.0;
+      double r = 0.0;
+      for (Index v : forest.simplices()[s].v) r = std::max(r, (forest.vertices()[v] - c).norm());
+      std::vector<double> dist;
+      std::vector<Index> nearest;
+      data.query(Points<3>{c}, dist, &nearest, 1);
+      const bool near = size > o.h_max || dist[0] < r + size / o.grading;
+      const double local = std::max(o.h_min, o.point_size[std::size_t(nearest[0])]);
+      if (size > o.h_max || (near && size > local && size > o.grading * std::max(0.0, dist[0] - r))) marked.push_back(s);
+    }
+    first = Index(forest.simplices().size());
+    for (Index s : marked) {
+      if (forest.is_leaf(s)) forest.refine(s);
+    }
+  }
+  return forest;
+}
+
+TEST(AdaptiveRefinement, SkippedSearchesChangeNoMark) {
+  // Random points on a sphere, local sizes stepping from 1 to 3 h_min across it (with a random
+  // 10%), sparse (spacing 3 h_min) and dense: every certificate is exercised, at sizes above and
+  // among the local sizes, and next to a jump in the local size.
+  for (int n : {1000, 20000}) {
+    std::mt19937 random(7);
+    std::normal_distribution<double> gaussian;
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    Points<3> points(static_cast<std::size_t>(n));
+    AdaptiveMeshOptions o;
+    o.h_min = 1.0 / 128;
+    for (auto& p : points) {
+      const Vec<3> g(gaussian(random), gaussian(random), gaussian(random));
+      p = Vec<3>(0.5, 0.5, 0.5) + (0.3 + 0.02 * uniform(random)) * g.normalized();
+      o.point_size.push_back(o.h_min * (p.x() < 0.5 ? 1.0 : 3.0) * (1.0 + 0.1 * uniform(random)));
+    }
+    const NearestPointIndex<3> data(points);
+    const AdaptiveMesh<3> fast = build_adaptive_mesh(data, o);
+    const KuhnBisectionForest<3> exhaustive = refine_by_exhaustive_search(data, o);
+    ASSERT_EQ(fast.forest.simplices().size(), exhaustive.simplices().size()) << n << " points";
+    for (Index s = 0; s < Index(exhaustive.simplices().size()); ++s) {
+      ASSERT_EQ(fast.forest.simplices()[s].v, exhaustive.simplices()[s].v) << n << " points, node " << s;
+    }
   }
 }
 
