@@ -388,7 +388,12 @@ AdaptiveMesh<D> leaf_mesh(KuhnBisectionForest<D> refined) {
     const Index at = first[std::size_t(*std::min_element(v.begin(), v.end()))]++;
     out.simplex_of_node[s] = at;
     out.mesh.simplices[std::size_t(at)] = v;
-    if (signed_measure(out.mesh, at) < 0.0) std::swap(out.mesh.simplices[std::size_t(at)][D - 1], out.mesh.simplices[std::size_t(at)][D]);
+  }
+  const long ns = long(out.mesh.simplices.size());
+#pragma omp parallel for schedule(static)
+  for (long s = 0; s < ns; ++s) {
+    auto& v = out.mesh.simplices[std::size_t(s)];
+    if (signed_measure(out.mesh, Index(s)) < 0.0) std::swap(v[D - 1], v[D]);
   }
   out.stats.finest_size = finest;
   out.stats.uniform_vertices = Index(std::pow(std::round(1.0 / finest) + 1.0, D));
