@@ -98,8 +98,11 @@ double KuhnBisectionForest<D>::size(Index s) const {
 
 template <int D>
 bool KuhnBisectionForest<D>::contains(Index s, Index vertex) const {
+  // Without early exit: four compares cost less than the branches of a search.
   const auto& v = simplices_[s].v;
-  return std::find(v.begin(), v.end(), vertex) != v.end();
+  bool found = false;
+  for (int i = 0; i <= D; ++i) found |= v[i] == vertex;
+  return found;
 }
 
 template <int D>
