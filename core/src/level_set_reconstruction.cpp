@@ -609,9 +609,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("distance");
 
   progress.update("operators", -1.0);
-  const VertexNeighbours neighbours = vertex_neighbours(mesh, o.threads);
-  P1Operators<D> ops = assemble_p1_operators(mesh, compute_simplex_geometry(mesh, o.solver == LinearSolver::gmres_reference),
-                                                   o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
+  VertexNeighbours neighbours;
+  P1Operators<D> ops;
+  {
+    const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, o.solver == LinearSolver::gmres_reference);
+    neighbours = vertex_neighbours(mesh, geometry, o.threads);
+    ops = assemble_p1_operators(mesh, geometry, o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
+  }
   clock.end("operators");
   progress.update("setup", -1.0);
   StepParameters step;

@@ -24,6 +24,62 @@ Eigen::Matrix<double, D, D> edge_matrix(const SimplexMesh<D>& mesh, Index s) {
 
 constexpr double factorial(int d) { return d <= 1 ? 1.0 : d * factorial(d - 1); }
 
+// CSR of the simplices around each vertex, in increasing simplex order.
+template <int D>
+void list_balls(const SimplexMesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& around) {
+  const std::size_t nv = mesh.vertices.size();
+  offsets.assign(nv + 1, 0);
+  for (const auto& simplex : mesh.simplices) {
+    for (Index v : simplex) ++offsets[std::size_t(v) + 1];
+  }
+  for (std::size_t v = 0; v < nv; ++v) offsets[v + 1] += offsets[v];
+  around.resize(std::size_t(offsets[nv]));
+  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  for (Index s = 0; s < Index(mesh.simplices.size()); ++s) {
+    for (Index v : mesh.simplices[std::size_t(s)]) around[std::size_t(fill[std::size_t(v)]++)] = s;
+  }
+}
+
+// The distinct other vertices of the simplices around each vertex, sorted: per vertex, in
+// parallel (a per-thread stamp marks the ones already listed). Twice: once to count the rows,
+// once to fill them.
+template <int D>
+VertexNeighbours neighbours_from_balls(const SimplexMesh<D>& mesh, const std::vector<Index>& ball_start,
+                                       const std::vector<Index>& around, int threads) {
+  const std::size_t nv = mesh.vertices.size();
+  VertexNeighbours g;
+  g.offsets.assign(nv + 1, 0);
+  const long n = long(nv);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] += g.offsets[v];
+      g.neighbours.resize(std::size_t(g.offsets[nv]));
+    }
+#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+    {
+      std::vector<Index> stamp(nv, -1), row;
+#pragma omp for schedule(static)
+      for (long v = 0; v < n; ++v) {
+        row.clear();
+        for (Index k = ball_start[std::size_t(v)]; k < ball_start[std::size_t(v) + 1]; ++k) {
+          for (Index w : mesh.simplices[std::size_t(around[std::size_t(k)])]) {
+            if (w == Index(v) || stamp[std::size_t(w)] == Index(v)) continue;
+            stamp[std::size_t(w)] = Index(v);
+            row.push_back(w);
+          }
+        }
+        if (pass == 0) {
+          g.offsets[std::size_t(v) + 1] = Index(row.size());
+        } else {
+          std::sort(row.begin(), row.end());
+          std::copy(row.begin(), row.end(), g.neighbours.begin() + g.offsets[std::size_t(v)]);
+        }
+      }
+    }
+  }
+  return g;
+}
+
 }  // namespace
 
 template <int D>
@@ -75,75 +131,31 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool wit
                        "the mesh must not contain flat simplices");
   }
 
-  g.ball_offsets.assign(nv + 1, 0);
-  for (const auto& simplex : mesh.simplices) {
-    for (Index v : simplex) ++g.ball_offsets[v + 1];
-  }
-  for (Index v = 0; v < nv; ++v) g.ball_offsets[v + 1] += g.ball_offsets[v];
-  g.ball_simplices.resize(g.ball_offsets[nv]);
-  std::vector<Index> fill(g.ball_offsets.begin(), g.ball_offsets.end() - 1);
+  list_balls(mesh, g.ball_offsets, g.ball_simplices);
+  // Gathered per vertex in increasing simplex order: the sums of a serial scatter, bit for bit.
   g.ball_measure.assign(nv, 0.0);
-  for (Index s = 0; s < ns; ++s) {
-    for (Index v : mesh.simplices[s]) {
-      g.ball_simplices[fill[v]++] = s;
-      g.ball_measure[v] += g.measure[s];
-    }
+#pragma omp parallel for schedule(static)
+  for (Index v = 0; v < nv; ++v) {
+    for (Index k = g.ball_offsets[v]; k < g.ball_offsets[v + 1]; ++k) g.ball_measure[v] += g.measure[g.ball_simplices[k]];
   }
   return g;
 }
 
 template <int D>
 VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads) {
-  const std::size_t nv = mesh.vertices.size();
-  // The simplices around each vertex; then per vertex, in parallel, the distinct other vertices
-  // of those simplices (a per-thread stamp marks the ones already listed), sorted. Twice: once
-  // to count the rows, once to fill them.
-  std::vector<Index> ball_start(nv + 1, 0);
-  for (const auto& simplex : mesh.simplices) {
-    for (Index v : simplex) ++ball_start[std::size_t(v) + 1];
-  }
-  for (std::size_t v = 0; v < nv; ++v) ball_start[v + 1] += ball_start[v];
-  std::vector<Index> around(static_cast<std::size_t>(ball_start[nv]));
-  {
-    std::vector<Index> fill(ball_start.begin(), ball_start.end() - 1);
-    for (Index s = 0; s < Index(mesh.simplices.size()); ++s) {
-      for (Index v : mesh.simplices[std::size_t(s)]) around[std::size_t(fill[std::size_t(v)]++)] = s;
-    }
-  }
-  VertexNeighbours g;
-  g.offsets.assign(nv + 1, 0);
-  const long n = long(nv);
-  for (int pass = 0; pass < 2; ++pass) {
-    if (pass == 1) {
-      for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] += g.offsets[v];
-      g.neighbours.resize(std::size_t(g.offsets[nv]));
-    }
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
-    {
-      std::vector<Index> stamp(nv, -1), row;
-#pragma omp for schedule(static)
-      for (long v = 0; v < n; ++v) {
-        row.clear();
-        for (Index k = ball_start[std::size_t(v)]; k < ball_start[std::size_t(v) + 1]; ++k) {
-          for (Index w : mesh.simplices[std::size_t(around[std::size_t(k)])]) {
-            if (w == Index(v) || stamp[std::size_t(w)] == Index(v)) continue;
-            stamp[std::size_t(w)] = Index(v);
-            row.push_back(w);
-          }
-        }
-        if (pass == 0) {
-          g.offsets[std::size_t(v) + 1] = Index(row.size());
-        } else {
-          std::sort(row.begin(), row.end());
-          std::copy(row.begin(), row.end(), g.neighbours.begin() + g.offsets[std::size_t(v)]);
-        }
-      }
-    }
-  }
-  return g;
+  std::vector<Index> ball_start, around;
+  list_balls(mesh, ball_start, around);
+  return neighbours_from_balls(mesh, ball_start, around, threads);
+}
+
+template <int D>
+VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& geometry, int threads) {
+  return neighbours_from_balls(mesh, geometry.ball_offsets, geometry.ball_simplices, threads);
 }
 
 template VertexNeighbours vertex_neighbours<2>(const SimplexMesh<2>&, int);
+template VertexNeighbours vertex_neighbours<2>(const SimplexMesh<2>&, const SimplexGeometry<2>&, int);
+template VertexNeighbours vertex_neighbours<3>(const SimplexMesh<3>&, const SimplexGeometry<3>&, int);
 template VertexNeighbours vertex_neighbours<3>(const SimplexMesh<3>&, int);
 template double signed_measure<2>(const SimplexMesh<2>&, Index);
 template double signed_measure<3>(const SimplexMesh<3>&, Index);

@@ -41,6 +41,11 @@ void check_geometry(const SimplexMesh<D>& mesh) {
       EXPECT_NE(std::find(s.begin(), s.end(), Index(v)), s.end());
     }
   }
+  // The edge graph from these balls is the one listed from the mesh alone.
+  const VertexNeighbours from_mesh = vertex_neighbours(mesh), from_balls = vertex_neighbours(mesh, g);
+  EXPECT_EQ(from_balls.offsets, from_mesh.offsets);
+  EXPECT_EQ(from_balls.neighbours, from_mesh.neighbours);
+  EXPECT_GT(from_mesh.neighbours.size(), mesh.vertices.size());
 }
 
 TEST(SimplexGeometry, GradientsMeasuresAndBalls2D) {

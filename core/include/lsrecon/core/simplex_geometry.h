@@ -56,6 +56,11 @@ struct SimplexGeometry {
 template <int D>
 SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool with_gradients = true);
 
+/// @brief The edge graph of a mesh from the balls of its geometry (the same graph as
+/// vertex_neighbours(mesh), without listing the balls again).
+template <int D>
+VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& geometry, int threads = 0);
+
 /// @brief The gradients of the barycentric coordinates of simplex s (one per vertex).
 template <int D>
 std::array<Vec<D>, D + 1> barycentric_gradients(const SimplexMesh<D>& mesh, Index s);
