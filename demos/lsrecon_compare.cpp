@@ -38,6 +38,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -59,6 +60,7 @@ struct Settings {
   lsr::SamplingVariant variant;
   double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
+  int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
 };
 
 const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
@@ -356,6 +358,30 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   return row;
 }
 
+double row_seconds(const std::string& row) {
+  std::stringstream in(row);
+  std::string cell;
+  for (int k = 0; k < 4; ++k) std::getline(in, cell, ',');
+  return cell.empty() ? std::numeric_limits<double>::infinity() : std::atof(cell.c_str());  // failed runs last
+}
+
+// The run of median time (the upper median of an even count), its note listing every run's time.
+std::string median_run(std::vector<std::string> runs) {
+  if (runs.size() == 1) return runs[0];
+  std::vector<double> seconds;
+  for (const auto& r : runs) seconds.push_back(row_seconds(r));
+  std::string times;
+  for (double t : seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%s%.3f", times.empty() ? "" : " ", t);
+    times += text;
+  }
+  std::stable_sort(runs.begin(), runs.end(), [](const std::string& a, const std::string& b) { return row_seconds(a) < row_seconds(b); });
+  std::string row = runs[runs.size() / 2];
+  if (!row.empty() && row.back() == '\n') row.pop_back();
+  return row + " (median of " + std::to_string(runs.size()) + " runs: " + times + " s)\n";
+}
+
 // lsrecon / poisson8 (PCL normal estimation + Poisson depth 8) per case, where both ran.
 void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
   std::map<std::string, std::map<std::string, std::pair<double, double>>> figures;  // case -> method -> (s, MiB)
@@ -423,7 +449,10 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .text("cases", "A,B,..", cases, "generated clouds (all, or some of: " + join(lsr::demos::case_names(), " ") + ")")
       .text("input", "FILE", s.input, "a cloud of yours instead: time, memory and topology only (no ground truth)")
       .text("methods", "A,B,..", methods, "reconstructors, some of: " + join(kMethods, " "))
-      .text("out", "DIR", s.out, "where results and meshes go");
+      .text("out", "DIR", s.out, "where results and meshes go")
+      .number("repeat", "N", s.repeat, 1, 99,
+              "runs per case and method, the methods taking turns; reports the run of median time "
+              "(this machine's times vary 10-20% between runs)");
   line.group("generated clouds (i.i.d. area-uniform random samples)")
       .number("points", "N", s.points, 4, 5e7, "points per cloud")
       .number("noise", "S", s.variant.noise, 0, 0.5, "Gaussian noise, times the diagonal")
@@ -463,11 +492,15 @@ int main(int argc, char** argv) {
     if (!s.input.empty()) s.cases = {"file"};
     std::vector<std::string> rows;
     for (const auto& c : s.cases) {
-      for (const auto& m : s.methods) {
-        std::fprintf(stderr, "%-12s %-14s ", c.c_str(), m.c_str());
-        rows.push_back(child_row(argv[0], s, c, m));
-        std::fprintf(stderr, "%s", rows.back().c_str());
+      std::vector<std::vector<std::string>> runs(s.methods.size());
+      for (int r = 0; r < s.repeat; ++r) {
+        for (std::size_t m = 0; m < s.methods.size(); ++m) {
+          std::fprintf(stderr, "%-12s %-14s ", c.c_str(), s.methods[m].c_str());
+          runs[m].push_back(child_row(argv[0], s, c, s.methods[m]));
+          std::fprintf(stderr, "%s", runs[m].back().c_str());
+        }
       }
+      for (auto& r : runs) rows.push_back(median_run(r));
     }
     std::ofstream csv(s.out + "/results.csv");
     csv << "case,method,points,seconds,peak_mib,chamfer_rel,hausdorff_rel,normal_consistency,watertight,manifold,"
