@@ -291,7 +291,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   const double largest_local =
       o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));
   // 4 typical sizes: measured on the 200k torus, 2, 3 and 8 certify fewer of the last pass's marks.
-  const NearbyLargestSize<D> nearby(data.points(), o.point_size, o.h_min, 4.0 * typical_size(o), o.threads);
+  const NearbyLargestSize<D> nearby(data.points(), o.point_size, o.h_min, 4.0 * predicted.h_min, o.threads);
   while (!cand.nodes.empty()) {
     progress.update("mesh", std::min(1.0, passes / expected_passes));
     // A simplex is marked when a point is near (within its radius + size / grading) and its size

@@ -3,7 +3,6 @@
 #include "lsrecon/core/z_order.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <type_traits>
 #include <utility>
@@ -12,7 +11,8 @@ namespace lsr {
 
 namespace {
 
-// Bit b of x moves to bit D b: the standard shift-and-mask spreading.
+// Bit b of x moves to bit D b: the standard shift-and-mask spreading (one mask set per D, so
+// two functions of the same shape).
 std::uint64_t spread(std::uint64_t x, std::integral_constant<int, 2>) {
   x &= 0xffffffffu;
   x = (x | x << 16) & 0x0000ffff0000ffffu;
