@@ -82,10 +82,10 @@ double radius_about(const KuhnBisectionForest<D>& forest, Index s, const Vec<D>&
 
 template <int D>
 struct Candidates {
-  std::vector<Index> nodes;
-  Points<D> centroids;
-  std::vector<double> radii;
-  std::vector<double> sizes;
+  LargeVector<Index> nodes;
+  LargeVector<Vec<D>> centroids;
+  LargeVector<double> radii;
+  LargeVector<double> sizes;
 };
 
 // The leaves created since `first` that a further bisection could concern: no simplex of size
@@ -109,6 +109,11 @@ Candidates<D> leaves_from(const KuhnBisectionForest<D>& forest, Index first, dou
     all.radii[std::size_t(i)] = radius_about(forest, s, all.centroids[std::size_t(i)]);
   }
   Candidates<D> c;
+  const auto listed = std::size_t(std::count_if(all.sizes.begin(), all.sizes.end(), [&](double x) { return x > h_min; }));
+  c.nodes.reserve(listed);
+  c.centroids.reserve(listed);
+  c.radii.reserve(listed);
+  c.sizes.reserve(listed);
   for (long i = 0; i < n; ++i) {
     if (all.sizes[std::size_t(i)] <= h_min) continue;  // inner nodes have size 0 here
     c.nodes.push_back(first + Index(i));
@@ -193,7 +198,7 @@ class NearbyLargestSize {
 // whose bound lies inside that empty ball finds nothing and stays unmarked.
 template <int D>
 std::vector<Certain> certain_outcomes(const KuhnBisectionForest<D>& forest, const Candidates<D>& cand,
-                                      const std::vector<Index>& witness, const Points<D>& points,
+                                      const LargeVector<Index>& witness, const Points<D>& points,
                                       const AdaptiveMeshOptions& o, double largest_local,
                                       const NearbyLargestSize<D>& nearby) {
   const long n = long(cand.nodes.size());
@@ -287,7 +292,8 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   Candidates<D> cand = leaves_from(forest, 0, o.h_min, o.threads);
   std::vector<double> dist, bound;
   std::vector<Index> nearest;
-  std::vector<Index> witness;  // per forest node: a data point near it, kNoWitness or kEmptyBall
+  Points<D> searched;
+  LargeVector<Index> witness;  // per forest node: a data point near it, kNoWitness or kEmptyBall
   const double largest_local =
       o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));
   // 4 typical sizes: measured on the 200k torus, 2, 3 and 8 certify fewer of the last pass's marks.
@@ -301,7 +307,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     const std::size_t nc = cand.nodes.size();
     witness.resize(forest.simplices().size(), kNoWitness);
     const std::vector<Certain> certain = certain_outcomes(forest, cand, witness, data.points(), o, largest_local, nearby);
-    Points<D> searched;
+    searched.clear();
     bound.clear();
     for (std::size_t i = 0; i < nc; ++i) {
       if (certain[i] != Certain::no) continue;

@@ -16,6 +16,7 @@
 /// Kuhn root (see point_location.h).
 #pragma once
 
+#include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/types.h"
 
 #include <array>
@@ -46,7 +47,7 @@ class KuhnBisectionForest {
 
   int cells_per_axis() const { return cells_; }
   const Points<D>& vertices() const { return vertices_; }
-  const std::vector<ForestSimplex<D>>& simplices() const { return simplices_; }
+  const LargeVector<ForestSimplex<D>>& simplices() const { return simplices_; }
   bool is_leaf(Index s) const { return simplices_[s].first_child < 0; }
   Index leaf_count() const { return leaf_count_; }
 
@@ -77,7 +78,7 @@ class KuhnBisectionForest {
 
   int cells_ = 0;
   Points<D> vertices_;
-  std::vector<ForestSimplex<D>> simplices_;
+  LargeVector<ForestSimplex<D>> simplices_;
   std::vector<std::vector<Index>> leaves_at_vertex_;
   std::vector<Index> patch_;  ///< the leaves around the edge refine() bisects
   static constexpr std::size_t kTypicalLeavesAtVertex = D == 2 ? 8 : 32;

@@ -5,6 +5,7 @@
 /// operator M = Div A^-1 G (eq. 12-14) in its symmetric form Lambda M = -G^T W G (appendix C).
 #pragma once
 
+#include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/simplex_geometry.h"
 
 #include <Eigen/SparseCore>
@@ -35,8 +36,8 @@ struct P1Operators {
   /// column columns[e] (i and its neighbours, sorted) with G(D i + k, columns[e]) at
   /// values[D e + k].
   std::vector<Index> offsets;
-  std::vector<Index> columns;
-  std::vector<double> values;
+  LargeVector<Index> columns;
+  LargeVector<double> values;
   /// #V x (D #V): (Div q)_i = sum_{K in B_i} |K| sum_{j in K} <q_j, grad w_{K,j}> / |B_i|, the
   /// projection eq. (12)-(14) apply to the components of a nodal field. Empty unless assembled
   /// with_divergence (only the paper-form reference and curvature() need it).
