@@ -26,7 +26,7 @@ constexpr double factorial(int d) { return d <= 1 ? 1.0 : d * factorial(d - 1); 
 
 // CSR of the simplices around each vertex, in increasing simplex order.
 template <int D>
-void list_balls(const SimplexMesh<D>& mesh, std::vector<Index>& offsets, std::vector<Index>& around) {
+void list_balls(const SimplexMesh<D>& mesh, LargeVector<Index>& offsets, LargeVector<Index>& around) {
   const std::size_t nv = mesh.vertices.size();
   offsets.assign(nv + 1, 0);
   for (const auto& simplex : mesh.simplices) {
@@ -44,8 +44,8 @@ void list_balls(const SimplexMesh<D>& mesh, std::vector<Index>& offsets, std::ve
 // parallel (a per-thread stamp marks the ones already listed). Twice: once to count the rows,
 // once to fill them.
 template <int D>
-VertexNeighbours neighbours_from_balls(const SimplexMesh<D>& mesh, const std::vector<Index>& ball_start,
-                                       const std::vector<Index>& around, int threads) {
+VertexNeighbours neighbours_from_balls(const SimplexMesh<D>& mesh, const LargeVector<Index>& ball_start,
+                                       const LargeVector<Index>& around, int threads) {
   const std::size_t nv = mesh.vertices.size();
   VertexNeighbours g;
   g.offsets.assign(nv + 1, 0);
@@ -143,7 +143,7 @@ SimplexGeometry<D> compute_simplex_geometry(const SimplexMesh<D>& mesh, bool wit
 
 template <int D>
 VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads) {
-  std::vector<Index> ball_start, around;
+  LargeVector<Index> ball_start, around;
   list_balls(mesh, ball_start, around);
   return neighbours_from_balls(mesh, ball_start, around, threads);
 }

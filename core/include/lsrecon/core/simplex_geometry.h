@@ -4,6 +4,7 @@
 /// the P1 operators need: measures, barycentric-coordinate gradients and vertex balls.
 #pragma once
 
+#include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/types.h"
 
 #include <array>
@@ -27,8 +28,8 @@ double signed_measure(const SimplexMesh<D>& mesh, Index s);
 /// @brief CSR vertex adjacency: the vertices sharing an edge with vertex i are
 /// neighbours[offsets[i] .. offsets[i + 1]), in ascending order.
 struct VertexNeighbours {
-  std::vector<Index> offsets;
-  std::vector<Index> neighbours;
+  LargeVector<Index> offsets;
+  LargeVector<Index> neighbours;
 };
 
 /// @brief The edge graph of a mesh.
@@ -39,13 +40,13 @@ VertexNeighbours vertex_neighbours(const SimplexMesh<D>& mesh, int threads = 0);
 /// @brief Geometry of a fixed mesh, computed once: what eq. (10)-(14) of the paper sum over.
 template <int D>
 struct SimplexGeometry {
-  std::vector<double> measure;  ///< #S: |K|
+  LargeVector<double> measure;  ///< #S: |K|
   /// #S: gradient of the barycentric coordinate of the j-th vertex of K (constant on K).
   std::vector<std::array<Vec<D>, D + 1>> gradients;
   /// CSR adjacency of the balls B_i: the simplices containing vertex i are
   /// ball_simplices[ball_offsets[i] .. ball_offsets[i + 1]).
-  std::vector<Index> ball_offsets;
-  std::vector<Index> ball_simplices;
+  LargeVector<Index> ball_offsets;
+  LargeVector<Index> ball_simplices;
   std::vector<double> ball_measure;  ///< #V: |B_i| = sum of |K| over B_i
 };
 
