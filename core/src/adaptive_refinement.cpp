@@ -292,7 +292,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   Candidates<D> cand = leaves_from(forest, 0, o.h_min, o.threads);
   std::vector<double> dist, bound;
   std::vector<Index> nearest;
-  Points<D> searched;
+  Points<D> searched;  // kept across passes: its storage is faulted in once
   LargeVector<Index> witness;  // per forest node: a data point near it, kNoWitness or kEmptyBall
   const double largest_local =
       o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));

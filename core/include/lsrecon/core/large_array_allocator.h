@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file large_array_allocator.h
 /// @brief An allocator for the solver's largest arrays (the bisection forest, the mesh
-/// candidates, the operators): backed by transparent huge pages where the system offers them.
+/// candidates, the edge graph, the balls, G): backed by transparent huge pages where the
+/// system offers them.
 ///
 /// Arrays of tens to hundreds of MiB are mapped fresh by malloc and first touched page by page:
 /// on the 200k-point torus those 4 KiB page faults took 8% of the run on a virtual machine
