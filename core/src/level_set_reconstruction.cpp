@@ -723,11 +723,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   bool best_front_ok = false;
   bool best_is_distance = false;
   try {
+    // Kept across the steps (and freed before the fit, the peak).
+    SemiImplicitStepper<D> stepper(ops);
+    Eigen::VectorXd before;
     for (int n = 1; n <= o.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
       SolverReport solve;
-      const Eigen::VectorXd before = u;
-      u = semi_implicit_step(ops, o.two_sided ? two_sided_drive(ops, d, away_from_data, u) : d, u, step, &solve);
+      before = u;
+      stepper.advance(o.two_sided ? two_sided_drive(ops, d, away_from_data, u) : d, u, step, &solve);
       const double displacement = front_displacement(before, u, ops.ball_measure, scale, D, front_area);
       r.solver_iterations += solve.iterations;
       clock.end("solve");

@@ -87,6 +87,16 @@ Eigen::VectorXd norms_per_vertex(const Eigen::VectorXd& field) {
   return out;
 }
 
+// (G u)_i, summed in storage order.
+template <int D>
+Vec<D> row_block_times(const P1Operators<D>& ops, Index i, const Eigen::VectorXd& u) {
+  Vec<D> sum = Vec<D>::Zero();
+  for (Index e = ops.offsets[i]; e < ops.offsets[i + 1]; ++e) {
+    sum += u[ops.columns[e]] * Eigen::Map<const Vec<D>>(ops.values.data() + D * std::size_t(e));
+  }
+  return sum;
+}
+
 int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 // out[j] = sum over the entries (i, j) of G's block pattern of f(i, G(D i .. D i + D - 1, j)),
@@ -95,13 +105,13 @@ int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threa
 // set aside first and added in row order, so every out[j] sums its terms in increasing i, as
 // one thread would: the same result on any number of threads.
 template <int D, class F>
-Eigen::VectorXd scatter_columns(const P1Operators<D>& ops, F f) {
+void scatter_columns(const P1Operators<D>& ops, F f, Eigen::VectorXd& out) {
   struct Term {
     Index column;
     double value;
   };
   const Index nv = Index(ops.offsets.size()) - 1;
-  Eigen::VectorXd out(nv);
+  out.resize(nv);
   std::vector<std::vector<Term>> crossing;
 #pragma omp parallel
   {
@@ -132,6 +142,12 @@ Eigen::VectorXd scatter_columns(const P1Operators<D>& ops, F f) {
     }
     for (int from = t + 1; from < threads; ++from) add_crossing(from);
   }
+}
+
+template <int D, class F>
+Eigen::VectorXd scatter_columns(const P1Operators<D>& ops, F f) {
+  Eigen::VectorXd out;
+  scatter_columns<D>(ops, f, out);
   return out;
 }
 
@@ -156,17 +172,17 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_times(const Eigen::VectorXd& u) const {
-  const Index nv = Index(offsets.size()) - 1;
-  Eigen::VectorXd out(D * nv);
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < nv; ++i) {
-    Vec<D> sum = Vec<D>::Zero();
-    for (Index e = offsets[i]; e < offsets[i + 1]; ++e) {
-      sum += u[columns[e]] * Eigen::Map<const Vec<D>>(values.data() + D * std::size_t(e));
-    }
-    out.template segment<D>(D * i) = sum;
-  }
+  Eigen::VectorXd out;
+  gradient_times(u, out);
   return out;
+}
+
+template <int D>
+void P1Operators<D>::gradient_times(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  const Index nv = Index(offsets.size()) - 1;
+  out.resize(D * nv);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < nv; ++i) out.template segment<D>(D * i) = row_block_times(*this, i, u);
 }
 
 template <int D>
@@ -204,7 +220,17 @@ SparseRowMatrix P1Operators<D>::gradient_matrix() const {
 
 template <int D>
 Eigen::VectorXd P1Operators<D>::gradient_norms(const Eigen::VectorXd& u) const {
-  return norms_per_vertex<D>(gradient_times(u));
+  Eigen::VectorXd out;
+  gradient_norms(u, out);
+  return out;
+}
+
+template <int D>
+void P1Operators<D>::gradient_norms(const Eigen::VectorXd& u, Eigen::VectorXd& out) const {
+  const Index nv = Index(offsets.size()) - 1;
+  out.resize(nv);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < nv; ++i) out[i] = row_block_times(*this, i, u).norm();
 }
 
 template <int D>
@@ -220,20 +246,51 @@ template <int D>
 SymmetricCurvatureOperator<D>::SymmetricCurvatureOperator(const P1Operators<D>& ops,
                                                           const Eigen::VectorXd& a,
                                                           const Eigen::VectorXd* scale)
-    : ops_(ops), weights_(D * a.size()) {
-  for (Eigen::Index j = 0; j < a.size(); ++j) {
-    weights_.template segment<D>(D * j).setConstant(ops.ball_measure[j] / a[j] * (scale ? (*scale)[j] : 1.0));
-  }
+    : ops_(ops) {
+  freeze(a, scale);
+}
+
+template <int D>
+void SymmetricCurvatureOperator<D>::freeze(const Eigen::VectorXd& a, const Eigen::VectorXd* scale) {
+  weights_.resize(a.size());
+  for (Eigen::Index j = 0; j < a.size(); ++j) weights_[j] = ops_.ball_measure[j] / a[j] * (scale ? (*scale)[j] : 1.0);
 }
 
 template <int D>
 Eigen::VectorXd SymmetricCurvatureOperator<D>::apply(const Eigen::VectorXd& v) const {
-  return ops_.gradient_transpose_times(weights_.cwiseProduct(ops_.gradient_times(v)));
+  Eigen::VectorXd out;
+  apply(v, out);
+  return out;
+}
+
+// G^T (W G v): W is applied inside the scatter, which reads G v's entries of row i once.
+template <int D>
+void SymmetricCurvatureOperator<D>::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
+  ops_.gradient_times(v, gradient_);
+  const Eigen::VectorXd& w = weights_;
+  const Eigen::VectorXd& gv = gradient_;
+  scatter_columns<D>(ops_, [&w, &gv](Index i, const double* g) {
+    double s = 0.0;
+    for (int k = 0; k < D; ++k) s += g[k] * (w[i] * gv[D * i + k]);
+    return s;
+  }, out);
 }
 
 template <int D>
 Eigen::VectorXd SymmetricCurvatureOperator<D>::diagonal() const {
-  return ops_.weighted_column_squares(weights_);
+  Eigen::VectorXd out;
+  diagonal(out);
+  return out;
+}
+
+template <int D>
+void SymmetricCurvatureOperator<D>::diagonal(Eigen::VectorXd& out) const {
+  const Eigen::VectorXd& w = weights_;
+  scatter_columns<D>(ops_, [&w](Index i, const double* g) {
+    double s = 0.0;
+    for (int k = 0; k < D; ++k) s += w[i] * g[k] * g[k];
+    return s;
+  }, out);
 }
 
 template struct P1Operators<2>;

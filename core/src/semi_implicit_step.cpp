@@ -11,53 +11,18 @@ namespace {
 
 // 1 on the vertices the solve updates, 0 on the walls and the held vertices.
 template <int D>
-Eigen::VectorXd wall_mask(const P1Operators<D>& ops, const StepParameters& p) {
-  Eigen::VectorXd interior(ops.on_boundary.size());
+void wall_mask(const P1Operators<D>& ops, const StepParameters& p, Eigen::VectorXd& interior) {
+  interior.resize(Eigen::Index(ops.on_boundary.size()));
   for (std::size_t i = 0; i < ops.on_boundary.size(); ++i) {
     interior[i] = ops.on_boundary[i] || (p.held && (*p.held)[i]) ? 0.0 : 1.0;
   }
-  return interior;
 }
 
-// Explicit data-term update, used as it is on the walls and as the start elsewhere.
-Eigen::VectorXd advance_by_data(const Eigen::VectorXd& u, const Eigen::VectorXd& a,
-                                const Eigen::VectorXd& d, const StepParameters& p) {
+// Explicit data-term update, used as it is on the walls and as the start elsewhere. An
+// expression (its operands are held by reference, the scalar by value), evaluated where used.
+auto advance_by_data(const Eigen::VectorXd& u, const Eigen::VectorXd& a, const Eigen::VectorXd& d,
+                     const StepParameters& p) {
   return u + p.time_step * p.alpha * a.cwiseProduct(d);
-}
-
-template <int D>
-Eigen::VectorXd step_cg(const P1Operators<D>& ops, const Eigen::VectorXd& d,
-                        const Eigen::VectorXd& u, const Eigen::VectorXd& a,
-                        const StepParameters& p, SolverReport* report) {
-  const Eigen::VectorXd interior = wall_mask(ops, p);
-  const Eigen::VectorXd lambda_over_a = ops.ball_measure.cwiseQuotient(a);
-  const bool per_vertex = p.curvature_weights.size() > 0;
-  const SymmetricCurvatureOperator<D> curvature(ops, a, per_vertex ? &p.curvature_weights : nullptr);
-  const double c = p.time_step * (per_vertex ? 1.0 : p.curvature_weight);
-  auto apply = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    Eigen::VectorXd out = lambda_over_a.cwiseProduct(v);
-    if (c > 0.0) out += c * curvature.apply(v);
-    return out;
-  };
-  const Eigen::VectorXd b = lambda_over_a.cwiseProduct(u) +
-                            p.time_step * p.alpha * ops.ball_measure.cwiseProduct(d);
-
-  // Walls take their data-term value; the interior starts from u (warm start) and solves for
-  // a correction delta that is zero on the walls.
-  Eigen::VectorXd x = interior.cwiseProduct(u) +
-                      (Eigen::VectorXd::Ones(u.size()) - interior).cwiseProduct(advance_by_data(u, a, d, p));
-  const Eigen::VectorXd residual = interior.cwiseProduct(b - apply(x));
-  Eigen::VectorXd diag = lambda_over_a;
-  if (c > 0.0) diag += c * curvature.diagonal();
-  const Eigen::VectorXd inverse_diag = interior.cwiseQuotient(diag);
-  auto masked = [&](const Eigen::VectorXd& v) -> Eigen::VectorXd {
-    return interior.cwiseProduct(apply(interior.cwiseProduct(v)));
-  };
-  Eigen::VectorXd delta = Eigen::VectorXd::Zero(u.size());
-  const SolverReport r = conjugate_gradient(masked, inverse_diag, residual, delta, p.solver_tolerance,
-                                            p.max_solver_iterations, interior.cwiseProduct(b).norm());
-  if (report) *report = r;
-  return x + delta;
 }
 
 template <int D>
@@ -74,7 +39,8 @@ Eigen::VectorXd step_gmres(const P1Operators<D>& ops, const Eigen::VectorXd& d,
   // Rows scaled by -dt beta a_i; wall rows by 0, so that they become identity rows below.
   Eigen::VectorXd row_scale = -p.time_step * p.curvature_weight * a;
   if (p.curvature_weights.size() > 0) row_scale = -p.time_step * p.curvature_weights.cwiseProduct(a);
-  const Eigen::VectorXd interior = wall_mask(ops, p);
+  Eigen::VectorXd interior;
+  wall_mask(ops, p, interior);
   row_scale = row_scale.cwiseProduct(interior);
   SparseRowMatrix system = row_scale.asDiagonal() * m;
   SparseRowMatrix identity(u.size(), u.size());
@@ -100,14 +66,73 @@ Eigen::VectorXd step_gmres(const P1Operators<D>& ops, const Eigen::VectorXd& d,
 }  // namespace
 
 template <int D>
+void SemiImplicitStepper<D>::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out, double c) const {
+  if (c > 0.0) {
+    curvature_.apply(v, out);
+    out = lambda_over_a_.cwiseProduct(v) + c * out;
+  } else {
+    out = lambda_over_a_.cwiseProduct(v);
+  }
+}
+
+// Each vector is written in place where the one it replaces is no longer needed: the stepper's
+// vectors live through the renormalisations between steps, at the peak of the time loop.
+template <int D>
+void SemiImplicitStepper<D>::advance_cg(const Eigen::VectorXd& d, Eigen::VectorXd& u, const StepParameters& p,
+                                        SolverReport* report) {
+  wall_mask(ops_, p, interior_);
+  lambda_over_a_ = ops_.ball_measure.cwiseQuotient(a_);
+  const bool per_vertex = p.curvature_weights.size() > 0;
+  curvature_.freeze(a_, per_vertex ? &p.curvature_weights : nullptr);
+  const double c = p.time_step * (per_vertex ? 1.0 : p.curvature_weight);
+  b_ = lambda_over_a_.cwiseProduct(u) + p.time_step * p.alpha * ops_.ball_measure.cwiseProduct(d);
+
+  // Walls take their data-term value; the interior starts from u (warm start) and solves for
+  // a correction delta that is zero on the walls. x overwrites u.
+  u = interior_.cwiseProduct(u) + (Eigen::VectorXd::Ones(u.size()) - interior_).cwiseProduct(advance_by_data(u, a_, d, p));
+  apply(u, residual_, c);
+  residual_ = interior_.cwiseProduct(b_ - residual_);
+  if (c > 0.0) {
+    curvature_.diagonal(inverse_diagonal_);
+    inverse_diagonal_ = interior_.cwiseQuotient(lambda_over_a_ + c * inverse_diagonal_);
+  } else {
+    inverse_diagonal_ = interior_.cwiseQuotient(lambda_over_a_);
+  }
+  auto masked = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+    masked_ = interior_.cwiseProduct(v);
+    apply(masked_, out, c);
+    out = interior_.cwiseProduct(out);
+  };
+  delta_.setZero(u.size());
+  const SolverReport r = conjugate_gradient(masked, inverse_diagonal_, residual_, delta_, p.solver_tolerance,
+                                            p.max_solver_iterations, cg_, interior_.cwiseProduct(b_).norm());
+  if (report) *report = r;
+  u += delta_;
+}
+
+template <int D>
+void SemiImplicitStepper<D>::advance(const Eigen::VectorXd& d, Eigen::VectorXd& u, const StepParameters& p,
+                                     SolverReport* report) {
+  ops_.gradient_norms(u, a_);
+  a_ = a_.cwiseMax(p.min_gradient);
+  if (p.solver == LinearSolver::conjugate_gradient) {
+    advance_cg(d, u, p, report);
+  } else {
+    u = step_gmres(ops_, d, u, a_, p, report);
+  }
+}
+
+template <int D>
 Eigen::VectorXd semi_implicit_step(const P1Operators<D>& ops, const Eigen::VectorXd& d,
                                    const Eigen::VectorXd& u, const StepParameters& p,
                                    SolverReport* report) {
-  const Eigen::VectorXd a = ops.gradient_norms(u).cwiseMax(p.min_gradient);
-  return p.solver == LinearSolver::conjugate_gradient ? step_cg(ops, d, u, a, p, report)
-                                                      : step_gmres(ops, d, u, a, p, report);
+  Eigen::VectorXd next = u;
+  SemiImplicitStepper<D>(ops).advance(d, next, p, report);
+  return next;
 }
 
+template class SemiImplicitStepper<2>;
+template class SemiImplicitStepper<3>;
 template Eigen::VectorXd semi_implicit_step<2>(const P1Operators<2>&, const Eigen::VectorXd&,
                                                const Eigen::VectorXd&, const StepParameters&, SolverReport*);
 template Eigen::VectorXd semi_implicit_step<3>(const P1Operators<3>&, const Eigen::VectorXd&,

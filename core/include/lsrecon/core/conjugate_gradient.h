@@ -21,27 +21,39 @@ struct SolverReport {
   double error = 0.0;  ///< final ||b - A x|| / ||b||
 };
 
+/// @brief CG's vectors, kept by a caller that solves many systems of one size.
+struct ConjugateGradientWorkspace {
+  Eigen::VectorXd r, z, p, ap;
+};
+
 /// @brief Solves A x = b for symmetric positive definite A, starting from x.
-/// @param apply v -> A v
+/// @param apply (v, out) -> out = A v
 /// @param inverse_diagonal Jacobi preconditioner, 1 / diag(A)
+/// @param x the start; a zero start saves one product
 /// @param tolerance stop when ||b - A x|| <= tolerance * reference_norm (||b|| if <= 0)
 template <class ApplyA>
 SolverReport conjugate_gradient(const ApplyA& apply, const Eigen::VectorXd& inverse_diagonal,
                                 const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance,
-                                int max_iterations, double reference_norm = 0.0) {
+                                int max_iterations, ConjugateGradientWorkspace& w,
+                                double reference_norm = 0.0) {
   SolverReport report;
   const double scale = reference_norm > 0.0 ? reference_norm : b.norm();
-  Eigen::VectorXd r = b - apply(x);
+  Eigen::VectorXd &r = w.r, &z = w.z, &p = w.p, &ap = w.ap;
+  r = b;
+  if (!x.isZero(0.0)) {
+    apply(x, ap);
+    r -= ap;
+  }
   if (scale == 0.0 || r.norm() <= tolerance * scale) {
     report.converged = true;
     report.error = scale == 0.0 ? 0.0 : r.norm() / scale;
     return report;
   }
-  Eigen::VectorXd z = inverse_diagonal.cwiseProduct(r);
-  Eigen::VectorXd p = z;
+  z = inverse_diagonal.cwiseProduct(r);
+  p = z;
   double rz = r.dot(z);
   for (report.iterations = 1; report.iterations <= max_iterations; ++report.iterations) {
-    const Eigen::VectorXd ap = apply(p);
+    apply(p, ap);
     const double step = rz / p.dot(ap);
     x += step * p;
     r -= step * ap;

@@ -47,6 +47,8 @@ struct P1Operators {
 
   /// @brief G u, D #V entries, in parallel (each entry summed in a fixed order: deterministic).
   Eigen::VectorXd gradient_times(const Eigen::VectorXd& u) const;
+  /// @brief G u into out, whose storage is reused when it has the size already.
+  void gradient_times(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
   /// @brief G^T y for y of D #V entries, in parallel and in a fixed order (deterministic).
   Eigen::VectorXd gradient_transpose_times(const Eigen::VectorXd& y) const;
   /// @brief sum_k w_{D i + k} G(D i + k, j)^2 over i for every j: diag(G^T W G).
@@ -55,6 +57,8 @@ struct P1Operators {
   SparseRowMatrix gradient_matrix() const;
   /// @brief |(G u)_i| per vertex.
   Eigen::VectorXd gradient_norms(const Eigen::VectorXd& u) const;
+  /// @brief |(G u)_i| per vertex into out, without storing G u.
+  void gradient_norms(const Eigen::VectorXd& u, Eigen::VectorXd& out) const;
   /// @brief The paper's curvature kappa_i = (Div A^-1 G u)_i with a_j = max(|(G u)_j|, eps_a)
   /// (eq. 14), on every vertex. Accurate on vertices away from the box walls.
   /// @throw std::logic_error if the divergence was not assembled.
@@ -73,21 +77,35 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
 /// @brief The symmetric form of the curvature operator at a frozen gradient:
 /// apply(v) = G^T W G v with W = diag(|B_j| / a_j) per component, so that
 /// Lambda M v = -apply(v) on rows of vertices away from the box walls.
+///
+/// It keeps G v between products, and a time loop keeps one operator for all its steps
+/// (freeze() per step): vectors allocated afresh at each product were page-faulted in again
+/// each time (glibc returns large freed blocks to the system), which took 3x the arithmetic
+/// of the 200k sphere's steps (775k vertices). Hence apply() is not reentrant.
 template <int D>
 class SymmetricCurvatureOperator {
  public:
+  /// @brief An operator to be frozen before use.
+  explicit SymmetricCurvatureOperator(const P1Operators<D>& ops) : ops_(ops) {}
   /// @param a #V: the frozen |grad u^n|, already bounded below by eps_a.
   /// @param scale #V factors on W (a per-vertex curvature weight), or nullptr for none.
   SymmetricCurvatureOperator(const P1Operators<D>& ops, const Eigen::VectorXd& a,
                              const Eigen::VectorXd* scale = nullptr);
+  /// @brief Freezes W at a new gradient norm a (same arguments as the constructor).
+  void freeze(const Eigen::VectorXd& a, const Eigen::VectorXd* scale = nullptr);
   /// @brief G^T W G v.
   Eigen::VectorXd apply(const Eigen::VectorXd& v) const;
+  /// @brief G^T W G v into out (reused when it has the size already).
+  void apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
   /// @brief diag(G^T W G), for Jacobi preconditioning.
   Eigen::VectorXd diagonal() const;
+  /// @brief diag(G^T W G) into out.
+  void diagonal(Eigen::VectorXd& out) const;
 
  private:
   const P1Operators<D>& ops_;
-  Eigen::VectorXd weights_;  ///< D #V: |B_j| / a_j repeated per component
+  Eigen::VectorXd weights_;           ///< #V: |B_j| / a_j, the same for the D components
+  mutable Eigen::VectorXd gradient_;  ///< D #V: G v of the last product
 };
 
 }  // namespace lsr
