@@ -10,6 +10,7 @@
 #include "lsrecon/core/level_set_extraction.h"
 
 #include "lsrecon/core/errors.h"
+#include "lsrecon/core/large_array_allocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,14 +55,14 @@ class EdgeVertices {
         }
       }
     }
-    std::vector<Index> start(u.size() + 1, 0);
+    LargeVector<Index> start(u.size() + 1, 0);
     for (const auto& list : edges) {
       for (const auto& e : list) ++start[std::size_t(e.first) + 1];
     }
     for (std::size_t a = 0; a < u.size(); ++a) start[a + 1] += start[a];
     ends_.resize(std::size_t(start.back()));
     {
-      std::vector<Index> fill(start.begin(), start.end() - 1);
+      LargeVector<Index> fill(start.begin(), start.end() - 1);
       for (const auto& list : edges) {
         for (const auto& e : list) ends_[std::size_t(fill[std::size_t(e.first)]++)] = e.second;
       }
@@ -100,8 +101,8 @@ class EdgeVertices {
   }
 
  private:
-  std::vector<Index> first_;  // #V + 1: the crossed edges (a, .) are first_[a] .. first_[a + 1] - 1
-  std::vector<Index> ends_;   // their other ends b, sorted per a
+  LargeVector<Index> first_;  // #V + 1: the crossed edges (a, .) are first_[a] .. first_[a + 1] - 1
+  LargeVector<Index> ends_;   // their other ends b, sorted per a
 };
 
 // Facets of a simplex: 0, 1 (a lone vertex) or, in 3D, 2 (a quad).

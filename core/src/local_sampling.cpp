@@ -125,7 +125,7 @@ double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std
 // extrapolate 20 spacings).
 template <int D>
 std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::vector<char>& open, const Points<D>& normals,
-                                 const std::vector<Index>& neighbours, int k, int threads) {
+                                 const LargeVector<Index>& neighbours, int k, int threads) {
   const Points<D>& p = data.points();
   std::vector<char> wide(p.size(), 0);
   Points<D> candidates;
@@ -136,7 +136,7 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
     which.push_back(i);
   }
   constexpr int kw = LocalSampling<D>::kRimNeighbours;
-  std::vector<Index> nearest;
+  LargeVector<Index> nearest;
   data.query_k(candidates, kw, nearest, threads);
   const long n = long(which.size());
   // The open side must be empty beyond the neighbourhood too: a point one neighbourhood radius
@@ -173,7 +173,7 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
 }
 
 // Median of raw over each point's neighbourhood.
-std::vector<double> neighbourhood_median(const std::vector<double>& raw, const std::vector<Index>& nearest, int k,
+std::vector<double> neighbourhood_median(const std::vector<double>& raw, const LargeVector<Index>& nearest, int k,
                                          int threads) {
   std::vector<double> out(raw.size());
   const long n = long(raw.size());
@@ -259,7 +259,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
   LocalSampling<D> s;
-  std::vector<Index> neighbours;
+  LargeVector<Index> neighbours;
   data.query_k(p, k, neighbours, t);
   const long n = long(p.size());
   std::vector<double> spacing(p.size()), noise(p.size());

@@ -133,7 +133,7 @@ void NearestPointIndex<D>::query_within(const Points<D>& queries, const std::vec
 }
 
 template <int D>
-void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, std::vector<Index>& nearest,
+void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, LargeVector<Index>& nearest,
                                    int threads) const {
   const long n = long(queries.size());
   const int kk = std::max(1, std::min<int>(k, int(impl_->points.size())));

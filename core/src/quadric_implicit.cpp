@@ -77,7 +77,7 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
   // The wider neighbourhoods in classes of sizes growing by 5/4, each class queried at its
   // largest size: one query for the widest point alone would make every noisy point search as
   // far (measured: 101k points of the 200k bunny searched for 120 neighbours, not 31-45).
-  std::vector<Index> nearest;
+  LargeVector<Index> nearest;
   data.query_k(p, k_clean, nearest, threads);
   std::vector<int> class_of(p.size(), -1);
   std::vector<int> class_k;
@@ -86,7 +86,7 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
     class_k.push_back(k);
   }
   std::vector<Points<D>> members(class_k.size());
-  std::vector<std::vector<Index>> wide(class_k.size());
+  std::vector<LargeVector<Index>> wide(class_k.size());
   std::vector<Index> row(p.size(), -1);
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (size[i] <= k_clean) continue;
@@ -171,13 +171,13 @@ template <int D>
 void QuadricImplicit<D>::evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal,
                                   int threads) const {
   const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
-  std::vector<Index> nearest;
+  LargeVector<Index> nearest;
   data_.query_k(queries, k, nearest, threads);
   blend(queries, nearest, k, value, normal, threads);
 }
 
 template <int D>
-void QuadricImplicit<D>::blend(const Points<D>& queries, const std::vector<Index>& nearest, int k,
+void QuadricImplicit<D>::blend(const Points<D>& queries, const LargeVector<Index>& nearest, int k,
                                std::vector<double>& value, Points<D>* normal, int threads) const {
   const Points<D>& p = data_.points();
   value.assign(queries.size(), 0.0);
@@ -211,7 +211,7 @@ void QuadricImplicit<D>::blend(const Points<D>& queries, const std::vector<Index
 template <int D>
 Points<D> QuadricImplicit<D>::project(Points<D>& points, int threads) const {
   const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
-  std::vector<Index> nearest;
+  LargeVector<Index> nearest;
   data_.query_k(points, k, nearest, threads);
   std::vector<double> f;
   Points<D> n;

@@ -4,6 +4,7 @@
 /// previous one's closest facets only, so the result does not depend on the thread count.
 #include "lsrecon/core/renormalization.h"
 
+#include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/point_simplex_distance.h"
 
 #include <algorithm>
@@ -35,8 +36,8 @@ double facet_distance(const LevelSetMesh<D>& front, Index f, const Vec<D>& p, in
 // padded so that rounding never lets the bound pass the computed distance.
 template <int D>
 struct FacetBalls {
-  std::vector<Vec<D>> centre;
-  std::vector<double> radius;
+  LargeVector<Vec<D>> centre;
+  LargeVector<double> radius;
   FacetBalls(const LevelSetMesh<D>& front, int threads) : centre(front.facets.size()), radius(front.facets.size()) {
     const long nf = long(front.facets.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -59,8 +60,8 @@ struct FacetBalls {
 
 // The nearest facet so far of every vertex; ties go to the lower facet index.
 struct Closest {
-  std::vector<double> distance;
-  std::vector<Index> facet;
+  LargeVector<double> distance;
+  LargeVector<Index> facet;
   bool improves(Index v, double d, Index f) const {
     return d < distance[v] || (d == distance[v] && f < facet[v]);
   }
@@ -87,7 +88,7 @@ std::array<Index, D + 1> facet_ends(const LevelSetMesh<D>& front, Index f) {
 template <int D>
 std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, Closest& c, int threads) {
   const long nf = long(front.facets.size());
-  std::vector<std::array<double, D + 1>> d(front.facets.size());
+  LargeVector<std::array<double, D + 1>> d(front.facets.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (long f = 0; f < nf; ++f) {
     const auto ends = facet_ends(front, Index(f));
@@ -112,7 +113,7 @@ std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front
 // round (each facet measured once).
 template <int D>
 std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
-                                    const FacetBalls<D>& balls, const Closest& c, const std::vector<char>& changed,
+                                    const FacetBalls<D>& balls, const Closest& c, const LargeVector<char>& changed,
                                     Index w) {
   std::array<Index, 48> tried;  // only the first n_tried are read
   int n_tried = 0;
@@ -138,8 +139,8 @@ std::pair<double, Index> best_offer(const SimplexMesh<D>& mesh, const VertexNeig
 // where the front is open (never, for a front extracted from a mesh).
 template <int D>
 struct FrontAdjacency {
-  std::vector<Index> offsets, around;
-  std::vector<std::array<Index, D>> next;
+  LargeVector<Index> offsets, around;
+  LargeVector<std::array<Index, D>> next;
 };
 
 template <int D>
@@ -153,7 +154,7 @@ FrontAdjacency<D> front_adjacency(const LevelSetMesh<D>& front, int threads) {
   }
   for (std::size_t v = 0; v < front.vertices.size(); ++v) offsets[v + 1] += offsets[v];
   around.resize(offsets.back());
-  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
+  LargeVector<Index> fill(offsets.begin(), offsets.end() - 1);
   for (Index f = 0; f < Index(front.facets.size()); ++f) {
     for (Index v : front.facets[f]) around[fill[v]++] = f;
   }
@@ -228,9 +229,9 @@ template <int D>
 void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const LevelSetMesh<D>& front,
                const FacetBalls<D>& balls, double band, std::vector<Index> changed, Closest& c, int threads) {
   const long nv = long(mesh.vertices.size());
-  std::vector<char> listed(mesh.vertices.size(), 0), is_changed(mesh.vertices.size(), 0);
-  std::vector<Index> candidates;
-  std::vector<std::pair<double, Index>> offer;
+  LargeVector<char> listed(mesh.vertices.size(), 0), is_changed(mesh.vertices.size(), 0);
+  LargeVector<Index> candidates;
+  LargeVector<std::pair<double, Index>> offer;
   while (!changed.empty()) {
     const long nc = long(changed.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -277,7 +278,7 @@ RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNei
   report.front = extract_zero_level_set(mesh, values, 1e-9, threads);
   if (report.front.facets.empty()) return report;
 
-  Closest c{std::vector<double>(mesh.vertices.size(), kInfinity), std::vector<Index>(mesh.vertices.size(), -1)};
+  Closest c{LargeVector<double>(mesh.vertices.size(), kInfinity), LargeVector<Index>(mesh.vertices.size(), -1)};
   const FacetBalls<D> balls(report.front, threads);
   propagate(mesh, neighbours, report.front, balls, band, seed(mesh, report.front, c, threads), c, threads);
   descend(mesh, report.front, front_adjacency(report.front, threads), balls, c, threads);

@@ -85,13 +85,16 @@ void SemiImplicitStepper<D>::advance_cg(const Eigen::VectorXd& d, Eigen::VectorX
   const bool per_vertex = p.curvature_weights.size() > 0;
   curvature_.freeze(a_, per_vertex ? &p.curvature_weights : nullptr);
   const double c = p.time_step * (per_vertex ? 1.0 : p.curvature_weight);
-  b_ = lambda_over_a_.cwiseProduct(u) + p.time_step * p.alpha * ops_.ball_measure.cwiseProduct(d);
+  // The right-hand side b, held in residual_ until A x is subtracted.
+  residual_ = lambda_over_a_.cwiseProduct(u) + p.time_step * p.alpha * ops_.ball_measure.cwiseProduct(d);
+  const double reference_norm = interior_.cwiseProduct(residual_).norm();
 
   // Walls take their data-term value; the interior starts from u (warm start) and solves for
   // a correction delta that is zero on the walls. x overwrites u.
   u = interior_.cwiseProduct(u) + (Eigen::VectorXd::Ones(u.size()) - interior_).cwiseProduct(advance_by_data(u, a_, d, p));
-  apply(u, residual_, c);
-  residual_ = interior_.cwiseProduct(b_ - residual_);
+  Eigen::VectorXd& ax = cg_.ap;  // free until the solve
+  apply(u, ax, c);
+  residual_ = interior_.cwiseProduct(residual_ - ax);
   if (c > 0.0) {
     curvature_.diagonal(inverse_diagonal_);
     inverse_diagonal_ = interior_.cwiseQuotient(lambda_over_a_ + c * inverse_diagonal_);
@@ -105,7 +108,7 @@ void SemiImplicitStepper<D>::advance_cg(const Eigen::VectorXd& d, Eigen::VectorX
   };
   delta_.setZero(u.size());
   const SolverReport r = conjugate_gradient(masked, inverse_diagonal_, residual_, delta_, p.solver_tolerance,
-                                            p.max_solver_iterations, cg_, interior_.cwiseProduct(b_).norm());
+                                            p.max_solver_iterations, cg_, reference_norm);
   if (report) *report = r;
   u += delta_;
 }

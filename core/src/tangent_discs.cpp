@@ -90,7 +90,7 @@ std::vector<double> tangent_disc_distance(const NearestPointIndex<D>& data, cons
     }
   }
   const int discs = std::min<int>(kDiscNeighbours, int(points.size()));
-  std::vector<Index> nearest;
+  LargeVector<Index> nearest;
   index.query_k(near, discs, nearest, t);
 #pragma omp parallel for schedule(static) num_threads(t)
   for (std::ptrdiff_t k = 0; k < std::ptrdiff_t(which.size()); ++k) {

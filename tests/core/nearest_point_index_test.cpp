@@ -85,7 +85,7 @@ void check_k_nearest(int k) {
   const Points<D> data = random_points<D>(2000, 5, 0.0, 1.0);
   const Points<D> queries = random_points<D>(700, 6, -0.1, 1.1);
   NearestPointIndex<D> index(data);
-  std::vector<Index> one, two;
+  LargeVector<Index> one, two;
   index.query_k(queries, k, one, 1);
   index.query_k(queries, k, two, 2);
   EXPECT_TRUE(one == two);

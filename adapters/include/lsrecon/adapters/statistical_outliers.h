@@ -29,8 +29,8 @@ struct StatisticalOutlierFilter {
 std::vector<std::size_t> statistical_inliers(const Points<3>& points, const StatisticalOutlierFilter& filter);
 
 /// @brief Keeps the listed entries of v, in order.
-template <class T>
-void keep_only(std::vector<T>& v, const std::vector<std::size_t>& kept) {
+template <class T, class A>
+void keep_only(std::vector<T, A>& v, const std::vector<std::size_t>& kept) {
   std::size_t n = 0;
   for (const std::size_t i : kept) v[n++] = v[i];
   v.resize(n);

@@ -4,6 +4,7 @@
 /// distance d(x) to the data of eq. (1).
 #pragma once
 
+#include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/types.h"
 
 #include <memory>
@@ -38,7 +39,7 @@ class NearestPointIndex {
                     std::vector<Index>& nearest, int threads = 0) const;
   /// @brief The k nearest data points of each query (k * #queries indices, nearest first;
   /// fewer than k points in the set repeat the last found index).
-  void query_k(const Points<D>& queries, int k, std::vector<Index>& nearest, int threads = 0) const;
+  void query_k(const Points<D>& queries, int k, LargeVector<Index>& nearest, int threads = 0) const;
 
   /// @brief Indices of the data points within radius of q (any order).
   void within(const Vec<D>& q, double radius, std::vector<Index>& found) const;

@@ -67,7 +67,7 @@ class QuadricImplicit {
   };
   double fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const;
   /// F (and the normal) at each query from the given blend centres (kBlendCentres per query).
-  void blend(const Points<D>& queries, const std::vector<Index>& nearest, int k, std::vector<double>& value,
+  void blend(const Points<D>& queries, const LargeVector<Index>& nearest, int k, std::vector<double>& value,
              Points<D>* normal, int threads) const;
 
   const NearestPointIndex<D>& data_;

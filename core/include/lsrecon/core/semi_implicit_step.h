@@ -59,7 +59,7 @@ class SemiImplicitStepper {
   const P1Operators<D>& ops_;
   SymmetricCurvatureOperator<D> curvature_;
   ConjugateGradientWorkspace cg_;
-  Eigen::VectorXd a_, interior_, lambda_over_a_, b_, residual_, inverse_diagonal_, delta_, masked_;
+  Eigen::VectorXd a_, interior_, lambda_over_a_, residual_, inverse_diagonal_, delta_, masked_;
 };
 
 /// @brief u at t_{n+1} from u at t_n (both #V), distance d (#V).

@@ -17,7 +17,7 @@ namespace lsr {
 template <int D>
 struct SimplexMesh {
   Points<D> vertices;                            ///< #V points of R^D
-  std::vector<std::array<Index, D + 1>> simplices;  ///< #S simplices
+  LargeVector<std::array<Index, D + 1>> simplices;  ///< #S simplices (on huge pages once large)
 };
 
 /// @brief det[x1 - x0, ..., xD - x0] / D!: the measure of simplex s, negative when it is

@@ -3,6 +3,8 @@
 /// @brief Small value types shared by every part of the core.
 #pragma once
 
+#include "lsrecon/core/large_array_allocator.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products on Vec<3>
 
@@ -22,9 +24,10 @@ using Index = std::int32_t;
 template <int D>
 using Vec = Eigen::Matrix<double, D, 1, Eigen::DontAlign>;
 
-/// A list of points of R^D.
+/// A list of points of R^D: a std::vector whose storage, once large, lies on huge pages (mesh
+/// vertices, fronts, queries: fresh arrays of tens of MiB each, see large_array_allocator.h).
 template <int D>
-using Points = std::vector<Vec<D>>;
+using Points = LargeVector<Vec<D>>;
 
 /// A mesh edge (a, b) with a < b and the parameter t of a point (1 - t) x_a + t x_b on it.
 struct EdgePoint {
