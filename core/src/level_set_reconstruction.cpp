@@ -738,6 +738,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on.
+        stepper.release();  // the renormalisation is the loop's memory peak
         const RenormalizationReport<D> renormalized = renormalize(mesh, neighbours, u, band, o.threads);
         front_distance = max_front_distance(renormalized.front, d, front_tolerance);
         front_area = front_measure(renormalized.front);

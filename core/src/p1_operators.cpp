@@ -293,6 +293,12 @@ void SymmetricCurvatureOperator<D>::diagonal(Eigen::VectorXd& out) const {
   }, out);
 }
 
+template <int D>
+void SymmetricCurvatureOperator<D>::release() {
+  weights_.resize(0);
+  gradient_.resize(0);
+}
+
 template struct P1Operators<2>;
 template struct P1Operators<3>;
 template P1Operators<2> assemble_p1_operators<2>(const SimplexMesh<2>&, const SimplexGeometry<2>&, bool,

@@ -126,6 +126,15 @@ void SemiImplicitStepper<D>::advance(const Eigen::VectorXd& d, Eigen::VectorXd& 
 }
 
 template <int D>
+void SemiImplicitStepper<D>::release() {
+  curvature_.release();
+  cg_ = ConjugateGradientWorkspace();
+  for (Eigen::VectorXd* v : {&a_, &interior_, &lambda_over_a_, &residual_, &inverse_diagonal_, &delta_, &masked_}) {
+    v->resize(0);
+  }
+}
+
+template <int D>
 Eigen::VectorXd semi_implicit_step(const P1Operators<D>& ops, const Eigen::VectorXd& d,
                                    const Eigen::VectorXd& u, const StepParameters& p,
                                    SolverReport* report) {

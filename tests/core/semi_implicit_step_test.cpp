@@ -65,6 +65,7 @@ TEST(SemiImplicitStep, WithoutCurvatureItIsTheExplicitDataStep) {
 
 // The stepper keeps its vectors from one step to the next; nothing of a step may leak into the
 // next: reused over steps whose parameters change, it gives the fresh step's u to the bit.
+// Also after its vectors were released between two steps.
 TEST(SemiImplicitStep, AReusedStepperGivesTheFreshStep) {
   const Problem2D p = problem(1.0 / 64);
   SemiImplicitStepper<2> stepper(p.ops);
@@ -80,6 +81,7 @@ TEST(SemiImplicitStep, AReusedStepperGivesTheFreshStep) {
       s.held = &held;
     }
     SolverReport a, b;
+    if (n == 1 || n == 4) stepper.release();  // as the time loop does before a renormalisation
     stepper.advance(p.d, reused, s, &a);
     fresh = semi_implicit_step(p.ops, p.d, fresh, s, &b);
     ASSERT_EQ(a.iterations, b.iterations) << "step " << n;

@@ -101,6 +101,8 @@ class SymmetricCurvatureOperator {
   Eigen::VectorXd diagonal() const;
   /// @brief diag(G^T W G) into out.
   void diagonal(Eigen::VectorXd& out) const;
+  /// @brief Frees W and the product's buffer; freeze() again before the next use.
+  void release();
 
  private:
   const P1Operators<D>& ops_;

@@ -50,6 +50,9 @@ class SemiImplicitStepper {
   /// @brief u at t_n (#V) becomes u at t_{n+1}; distance d (#V).
   void advance(const Eigen::VectorXd& distance, Eigen::VectorXd& u, const StepParameters& p,
                SolverReport* report = nullptr);
+  /// @brief Frees the kept vectors (the next step allocates them again): the caller's memory
+  /// peak between steps, e.g. a renormalisation, then does not carry them.
+  void release();
 
  private:
   void advance_cg(const Eigen::VectorXd& d, Eigen::VectorXd& u, const StepParameters& p, SolverReport* report);
