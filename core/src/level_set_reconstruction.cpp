@@ -723,7 +723,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   bool best_front_ok = false;
   bool best_is_distance = false;
   try {
-    // Kept across the steps (and freed before the fit, the peak).
+    // Its vectors are kept from step to step, released before each renormalisation (the
+    // loop's peak) and freed before the fit.
     SemiImplicitStepper<D> stepper(ops);
     Eigen::VectorXd before;
     for (int n = 1; n <= o.max_iterations; ++n) {

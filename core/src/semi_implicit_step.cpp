@@ -75,8 +75,8 @@ void SemiImplicitStepper<D>::apply(const Eigen::VectorXd& v, Eigen::VectorXd& ou
   }
 }
 
-// Each vector is written in place where the one it replaces is no longer needed: the stepper's
-// vectors live through the renormalisations between steps, at the peak of the time loop.
+// Each vector is written in place where the one it replaces is no longer needed: fewer vectors
+// to keep (and to fault in again after release()).
 template <int D>
 void SemiImplicitStepper<D>::advance_cg(const Eigen::VectorXd& d, Eigen::VectorXd& u, const StepParameters& p,
                                         SolverReport* report) {
