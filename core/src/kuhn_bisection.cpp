@@ -78,6 +78,7 @@ KuhnBisectionForest<D>::KuhnBisectionForest(int cells_per_axis) : cells_(cells_p
     }
   }
   leaf_count_ = Index(simplices_.size());
+  level_size_.push_back(measured_size(0));
   leaves_at_vertex_.resize(vertices_.size());
   for (Index s = 0; s < leaf_count_; ++s) {
     for (Index v : simplices_[s].v) leaves_at_vertex_[v].push_back(s);
@@ -85,7 +86,7 @@ KuhnBisectionForest<D>::KuhnBisectionForest(int cells_per_axis) : cells_(cells_p
 }
 
 template <int D>
-double KuhnBisectionForest<D>::size(Index s) const {
+double KuhnBisectionForest<D>::measured_size(Index s) const {
   const auto& v = simplices_[s].v;
   double longest2 = 0.0;
   for (int i = 0; i <= D; ++i) {
@@ -180,6 +181,7 @@ void KuhnBisectionForest<D>::bisect(Index s, Index z) {
   simplices_.push_back(c0);
   simplices_.push_back(c1);
   ++leaf_count_;
+  if (c0.level >= level_size_.size()) level_size_.push_back(measured_size(first));
 
   for (Index v : parent.v) {
     auto& list = leaves_at_vertex_[v];

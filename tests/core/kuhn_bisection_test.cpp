@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace lsr {
@@ -83,6 +85,35 @@ TEST(KuhnBisection, SizeIsTheKuhnCubeSide) {
     s = forest.simplices()[s].first_child;
   }
   EXPECT_NEAR(forest.size(s), 0.125, 1e-15);
+}
+
+// size() reads a size per level: every simplex of a level must have it. On power-of-two grids
+// (the adaptive mesh's) every coordinate is dyadic and the sizes are equal to the bit; on others
+// the coordinates (k/3) carry rounding errors of 2^-54 each, so edges differ by a few 2^-53.
+template <int D>
+void check_sizes_per_level(int cells, double tolerance) {
+  KuhnBisectionForest<D> forest(cells);
+  refine_randomly(forest, 3000, 7);
+  for (Index s = 0; s < Index(forest.simplices().size()); ++s) {
+    const auto& v = forest.simplices()[s].v;
+    double longest2 = 0.0;
+    for (int i = 0; i <= D; ++i) {
+      for (int j = i + 1; j <= D; ++j) longest2 = std::max(longest2, (forest.vertices()[v[i]] - forest.vertices()[v[j]]).squaredNorm());
+    }
+    const double measured = std::sqrt(longest2 / D);
+    if (tolerance == 0.0) {
+      ASSERT_EQ(forest.size(s), measured) << "simplex " << s;
+    } else {
+      ASSERT_NEAR(forest.size(s), measured, tolerance) << "simplex " << s;
+    }
+  }
+}
+
+TEST(KuhnBisection, EverySimplexHasItsLevelsSize) {
+  check_sizes_per_level<2>(4, 0.0);
+  check_sizes_per_level<3>(4, 0.0);
+  check_sizes_per_level<2>(3, 8 * std::ldexp(1.0, -53));
+  check_sizes_per_level<3>(3, 8 * std::ldexp(1.0, -53));
 }
 
 TEST(KuhnBisection, RejectsAbsurdGrids) {

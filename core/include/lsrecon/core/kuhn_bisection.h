@@ -60,18 +60,25 @@ class KuhnBisectionForest {
   static const std::array<std::array<int, D>, kRootsPerCell>& permutations();
 
   /// @brief Size of a simplex: its longest edge / sqrt(D). For a Kuhn simplex this is the side
-  /// of its cube; the D - 1 intermediate bisection levels lie between two cube sides.
-  double size(Index s) const;
+  /// of its cube; the D - 1 intermediate bisection levels lie between two cube sides. The
+  /// simplices of one level are congruent [Maubach 1995], and their edges' coordinates are
+  /// dyadic (exact): the size of the first one of its level, read without its vertices.
+  double size(Index s) const { return level_size_[simplices_[s].level]; }
 
   /// @brief Bisects leaf s, after bisecting whatever neighbours the conforming closure needs
   /// (the mesh of leaves is conforming before and after).
   void refine(Index s);
+
+  /// @brief Room for this many nodes in all (never shrinks): refine() then appends without
+  /// moving the forest.
+  void reserve(std::size_t nodes) { simplices_.reserve(nodes); }
 
   /// @brief Frees the vertex-to-leaf lists refine() needs; refine() must not be called after.
   void finish_refinement();
 
  private:
   void refine(Index s, int depth);
+  double measured_size(Index s) const;
   bool has_refinement_edge(Index s, Index a, Index b) const;
   bool contains(Index s, Index vertex) const;
   void bisect(Index s, Index midpoint);
@@ -80,6 +87,7 @@ class KuhnBisectionForest {
   Points<D> vertices_;
   LargeVector<ForestSimplex<D>> simplices_;
   std::vector<std::vector<Index>> leaves_at_vertex_;
+  std::vector<double> level_size_;  ///< size() per level
   std::vector<Index> patch_;  ///< the leaves around the edge refine() bisects
   static constexpr std::size_t kTypicalLeavesAtVertex = D == 2 ? 8 : 32;
   Index leaf_count_ = 0;
