@@ -64,6 +64,7 @@ class QuadricImplicit {
     Eigen::Matrix<double, D - 1, 1> g;
     Eigen::Matrix<double, D - 1, D - 1> h;
     double reach = 0.0;  ///< radius of the neighbourhood fitted
+    double fade_width2 = 0.0;  ///< (2 reach)^2: the curvature term fades beyond 2 reach
   };
   double fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const;
   /// F (and the normal) at each query from the given blend centres (kBlendCentres per query).
@@ -72,6 +73,7 @@ class QuadricImplicit {
 
   const NearestPointIndex<D>& data_;
   std::vector<double> spacing_;
+  std::vector<double> blend_width2_;  ///< per point: the squared width of its blending weight
   std::vector<Fit> fits_;
 };
 
