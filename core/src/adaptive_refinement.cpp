@@ -77,8 +77,9 @@ void check_predicted_size(double vertices, double added, double finest_now,
 
 // Room for the nodes the passes left will add, reserved while the forest is small: grown by
 // doubling, it moved in the last passes, and a move first-touches the whole new copy (measured
-// on the 200k sphere: bisection 1.0-1.8 -> 0.9-1.2 s). Capacity never used is address space
-// only, its pages never touched; a reservation the system refuses is skipped.
+// on the 200k sphere, seven runs each: bisection 1.36-2.17 s grown, 0.99-1.79 s reserved).
+// Capacity never used is address space only, its pages never touched; a reservation the
+// system refuses is skipped.
 template <int D>
 void reserve_predicted(KuhnBisectionForest<D>& forest, Index first_new, double finest_next, double h_min) {
   const double nodes = double(forest.simplices().size());
