@@ -78,13 +78,15 @@ void check_predicted_size(double vertices, double added, double finest_now,
 // Room for the nodes the passes left will add, reserved while the forest is small: grown by
 // doubling, it moved in the last passes, and a move first-touches the whole new copy (measured
 // on the 200k sphere, seven runs each: bisection 1.36-2.17 s grown, 0.99-1.79 s reserved).
-// Capacity never used is address space only, its pages never touched; a reservation the
-// system refuses is skipped.
+// Reserved only when the next pass may not fit (the predictions of successive passes differ
+// by up to 1.5x: reserving each time would move the forest each time), then for all passes
+// left with a margin. Capacity never used is address space only, its pages never touched; a
+// reservation the system refuses is skipped.
 template <int D>
 void reserve_predicted(KuhnBisectionForest<D>& forest, Index first_new, double finest_next, double h_min) {
   const double nodes = double(forest.simplices().size());
   const std::vector<double> totals = predicted_totals<D>(nodes, nodes - double(first_new), finest_next, h_min);
-  if (totals.empty()) return;
+  if (totals.empty() || double(forest.simplices().capacity()) >= totals.front()) return;
   try {
     forest.reserve(std::size_t(1.25 * totals.back()));
   } catch (const std::bad_alloc&) {
