@@ -61,8 +61,9 @@ class KuhnBisectionForest {
 
   /// @brief Size of a simplex: its longest edge / sqrt(D). For a Kuhn simplex this is the side
   /// of its cube; the D - 1 intermediate bisection levels lie between two cube sides. The
-  /// simplices of one level are congruent [Maubach 1995], and their edges' coordinates are
-  /// dyadic (exact): the size of the first one of its level, read without its vertices.
+  /// simplices of one level are congruent [Maubach 1995]: the size of the first one of its
+  /// level, read without its vertices. On a power-of-two grid (the adaptive mesh's) every
+  /// coordinate is dyadic and that size is each one's to the bit; on others, to a few 2^-53.
   double size(Index s) const { return level_size_[simplices_[s].level]; }
 
   /// @brief Bisects leaf s, after bisecting whatever neighbours the conforming closure needs
