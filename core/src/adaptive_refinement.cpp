@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <new>
 #include <string>
@@ -91,6 +92,39 @@ void reserve_predicted(KuhnBisectionForest<D>& forest, Index first_new, double f
     forest.reserve(std::size_t(1.25 * totals.back()));
   } catch (const std::bad_alloc&) {
   }
+}
+
+// New forest nodes per marked leaf (its bisection and the closure's): 2.2 to 2.8 in the passes
+// of the 200k torus, by level.
+constexpr double kNodesPerMark = 2.8;
+
+// Bisects the marked leaves, serially (the closure's order decides the forest), while a second
+// thread faults in the pages of the forest's next nodes. Measured on the 200k torus: those
+// faults were 0.4 s of the serial bisection (perf), the mesh stage took 0.5 s less (medians
+// of six interleaved runs).
+template <int D>
+void refine_marked(KuhnBisectionForest<D>& forest, const std::vector<Index>& marked, int threads) {
+  auto refine_all = [&] {
+    for (Index s : marked) {
+      if (forest.is_leaf(s)) forest.refine(s);
+    }
+  };
+  if (threads == 1 || omp_get_max_threads() < 2) return refine_all();
+  const std::size_t now = forest.simplices().size();
+  const StorageRange next = storage_range(forest.simplices(), now, now + std::size_t(kNodesPerMark * double(marked.size())));
+  std::exception_ptr failure;
+#pragma omp parallel sections num_threads(2)
+  {
+#pragma omp section
+    try {
+      refine_all();
+    } catch (...) {  // an exception must not leave an OpenMP region
+      failure = std::current_exception();
+    }
+#pragma omp section
+    populate(next);
+  }
+  if (failure) std::rethrow_exception(failure);
 }
 
 template <int D>
@@ -380,9 +414,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
       }
     }
     if (marked.empty()) break;
-    for (Index s : marked) {
-      if (forest.is_leaf(s)) forest.refine(s);
-    }
+    refine_marked(forest, marked, o.threads);
     ++passes;
 
     const double finest_next = largest_marked / std::pow(2.0, 1.0 / D);

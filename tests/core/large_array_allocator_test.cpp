@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <thread>
 
 namespace lsr {
 namespace {
@@ -41,6 +42,25 @@ TEST(LargeArrayAllocator, CopiesAndMovesAreIndependentStorage) {
   EXPECT_EQ(c.data(), storage);
   EXPECT_EQ(c.back(), double(c.size() - 1) + 0.5);
   EXPECT_TRUE(LargeArrayAllocator<double>() == LargeArrayAllocator<int>());
+}
+
+TEST(LargeArrayAllocator, PopulatingLeavesTheContentsAndStopsAtTheCapacity) {
+  const std::size_t n = 3 * detail::kLargeArrayBytes / sizeof(std::int64_t);
+  LargeVector<std::int64_t> v(n / 2);
+  std::iota(v.begin(), v.end(), std::int64_t(1));
+  v.reserve(n);
+  // From inside the live elements (the page holding them) to past the capacity: clamped.
+  const StorageRange range = storage_range(v, n / 4 + 3, 2 * n);
+  EXPECT_EQ(range.begin, static_cast<const void*>(v.data() + n / 4 + 3));
+  EXPECT_EQ(range.bytes, (n - n / 4 - 3) * sizeof(std::int64_t));
+  EXPECT_EQ(storage_range(v, n, n + 5).bytes, 0u);
+  EXPECT_EQ(storage_range(v, 7, 7).bytes, 0u);
+  // Populated while this thread appends: the appended and the earlier values stay.
+  std::thread helper([range] { populate(range); });
+  for (std::size_t i = n / 2; i < n; ++i) v.push_back(std::int64_t(i) + 1);
+  helper.join();
+  for (std::size_t i = 0; i < n; i += 4099) ASSERT_EQ(v[i], std::int64_t(i) + 1) << i;
+  EXPECT_EQ(v.back(), std::int64_t(n));
 }
 
 TEST(LargeArrayAllocator, ImpossibleSizesThrow) {
