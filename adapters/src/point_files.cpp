@@ -99,6 +99,10 @@ PointFile read_text(const std::string& path) {
       ++out.skipped;
     }
   }
+  // Said here, not as "no finite points" below: the file is what to change.
+  if (out.points.empty() && out.skipped == 0) {
+    throw Error(path + " holds no points: it is empty or only comments and a header line", format);
+  }
   out.planar_text = columns == 2;
   return out;
 }

@@ -67,7 +67,8 @@ std::vector<Row> lying_headers() {
 // Text a user can get wrong, and point sets that cannot make a closed surface.
 std::vector<Row> bad_points() {
   return {
-      {"empty.xyz", [](std::ofstream& f) { f << "# nothing\n"; }, "empty"},
+      {"empty.xyz", [](std::ofstream& f) { f << "# nothing\n"; }, "holds no points: it is empty"},
+      {"header-only.xyz", [](std::ofstream& f) { lines(f, {"garbage here"}); }, "holds no points"},
       {"one.xyz", [](std::ofstream& f) { lines(f, {"1 2 3"}); }, "1 distinct point"},
       {"same.xyz", [](std::ofstream& f) { lines(f, {"1 2 3", "1 2 3", "1 2 3", "1 2 3", "1 2 3"}); }, "1 distinct point"},
       {"three.xyz", [](std::ofstream& f) { lines(f, {"0 0 0", "1 0 0", "0 1 0"}); }, "3 distinct point"},
