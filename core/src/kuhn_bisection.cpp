@@ -79,9 +79,9 @@ KuhnBisectionForest<D>::KuhnBisectionForest(int cells_per_axis) : cells_(cells_p
   }
   leaf_count_ = Index(simplices_.size());
   level_size_.push_back(measured_size(0));
-  leaves_at_vertex_.resize(vertices_.size());
+  for (std::size_t v = 0; v < vertices_.size(); ++v) leaves_at_vertex_.add_vertex();
   for (Index s = 0; s < leaf_count_; ++s) {
-    for (Index v : simplices_[s].v) leaves_at_vertex_[v].push_back(s);
+    for (Index v : simplices_[s].v) leaves_at_vertex_.push(v, s);
   }
 }
 
@@ -134,7 +134,7 @@ void KuhnBisectionForest<D>::refine(Index s, int depth) {
     const Index a = simplices_[s].v[0];
     const Index b = simplices_[s].v[simplices_[s].tag];
     Index blocker = -1;
-    for (Index t : leaves_at_vertex_[a]) {
+    for (Index t : leaves_at_vertex_.leaves(a)) {
       if (contains(t, b) && !has_refinement_edge(t, a, b)) {
         blocker = t;
         break;
@@ -147,13 +147,12 @@ void KuhnBisectionForest<D>::refine(Index s, int depth) {
   const Index a = simplices_[s].v[0];
   const Index b = simplices_[s].v[simplices_[s].tag];
   patch_.clear();  // reused: nothing below recurses
-  for (Index t : leaves_at_vertex_[a]) {
+  for (Index t : leaves_at_vertex_.leaves(a)) {
     if (contains(t, b)) patch_.push_back(t);
   }
   const Index z = Index(vertices_.size());
   vertices_.push_back(0.5 * (vertices_[a] + vertices_[b]));
-  // Room for the leaves a vertex typically ends up in, allocated once instead of doubling.
-  leaves_at_vertex_.emplace_back().reserve(kTypicalLeavesAtVertex);
+  leaves_at_vertex_.add_vertex();
   for (Index t : patch_) bisect(t, z);
 }
 
@@ -183,20 +182,14 @@ void KuhnBisectionForest<D>::bisect(Index s, Index z) {
   ++leaf_count_;
   if (c0.level >= level_size_.size()) level_size_.push_back(measured_size(first));
 
-  for (Index v : parent.v) {
-    auto& list = leaves_at_vertex_[v];
-    auto it = std::find(list.begin(), list.end(), s);
-    *it = list.back();
-    list.pop_back();
-  }
-  for (Index v : c0.v) leaves_at_vertex_[v].push_back(first);
-  for (Index v : c1.v) leaves_at_vertex_[v].push_back(first + 1);
+  for (Index v : parent.v) leaves_at_vertex_.erase(v, s);
+  for (Index v : c0.v) leaves_at_vertex_.push(v, first);
+  for (Index v : c1.v) leaves_at_vertex_.push(v, first + 1);
 }
 
 template <int D>
 void KuhnBisectionForest<D>::finish_refinement() {
   leaves_at_vertex_.clear();
-  leaves_at_vertex_.shrink_to_fit();
 }
 
 template class KuhnBisectionForest<2>;

@@ -18,6 +18,7 @@
 
 #include "lsrecon/core/large_array_allocator.h"
 #include "lsrecon/core/types.h"
+#include "lsrecon/core/vertex_leaf_lists.h"
 
 #include <array>
 #include <cstdint>
@@ -87,10 +88,10 @@ class KuhnBisectionForest {
   int cells_ = 0;
   Points<D> vertices_;
   LargeVector<ForestSimplex<D>> simplices_;
-  std::vector<std::vector<Index>> leaves_at_vertex_;
+  /// 48 slots in 3D: the longest list measured (200k-point torus); longer ones move out.
+  VertexLeafLists<D == 2 ? 16 : 48> leaves_at_vertex_;
   std::vector<double> level_size_;  ///< size() per level
   std::vector<Index> patch_;  ///< the leaves around the edge refine() bisects
-  static constexpr std::size_t kTypicalLeavesAtVertex = D == 2 ? 8 : 32;
   Index leaf_count_ = 0;
 };
 
