@@ -6,9 +6,9 @@ namespace lsr::demos {
 
 std::vector<std::string> case_names() { return test_shape_names(); }
 
-CompareCase make_case(const std::string& name, int n, const SamplingVariant& variant) {
+CompareCase make_case(const std::string& name, int n, const SamplingVariant& variant, unsigned seed) {
   const TestShape shape = make_test_shape(name);
-  const SampledShape sample = sample_test_shape(shape, n, variant, 2011);
+  const SampledShape sample = sample_test_shape(shape, n, variant, seed);
   CompareCase c;
   c.name = name;
   c.points = sample.points;

@@ -58,6 +58,7 @@ struct Settings {
   std::vector<std::string> methods = {"lsrecon", "poisson8", "poisson8-lsrecon", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
   int points = 20000;
   lsr::SamplingVariant variant;
+  int seed = int(lsr::demos::kDefaultSeed);
   double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
   int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
@@ -301,7 +302,7 @@ lsr::demos::CompareCase file_case(const std::string& path) {
 
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
-                                        ? lsr::demos::make_case(case_name, s.points, s.variant)
+                                        ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed))
                                         : file_case(s.input);
   if (method == "poisson8-true" && c.normals.empty()) {
     std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
@@ -348,7 +349,7 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   command << self << " --run " << case_name << '/' << method << " --out '" << s.out << "'"
           << (s.input.empty() ? "" : " --input '" + s.input + "'") << " --points " << s.points << " --noise "
           << s.variant.noise << " --holes " << s.variant.holes << " --density-ratio " << s.variant.density_ratio
-          << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution << " 2>/dev/null";
+          << " --seed " << s.seed << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution << " 2>/dev/null";
   FILE* pipe = popen(command.str().c_str(), "r");
   std::string row;
   char buffer[4096];
@@ -431,7 +432,7 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
   write_ratios(md, rows);
   md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
      << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
-     << s.variant.density_ratio << ". Seconds include normal estimation for the methods "
+     << s.variant.density_ratio << ", seed " << s.seed << ". Seconds include normal estimation for the methods "
      << "that need normals (PCA of 16 neighbours, oriented away from the centroid).\n";
 }
 
@@ -457,7 +458,9 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .number("points", "N", s.points, 4, 5e7, "points per cloud")
       .number("noise", "S", s.variant.noise, 0, 0.5, "Gaussian noise, times the diagonal")
       .number("holes", "N", s.variant.holes, 0, 100, "unsampled caps")
-      .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x");
+      .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x")
+      .number("seed", "N", s.seed, 0, 2147483647,
+              "the draw: another seed, another cloud of the same shape (how much a figure owes to one draw)");
   line.group("lsrecon")
       .number("hole-radius", "H", s.hole_radius, -1, 0.49, "lsrecon's --hole-radius")
       .number("max-resolution", "R", s.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)");
