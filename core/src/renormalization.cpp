@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include <omp.h>
@@ -82,30 +84,61 @@ std::array<Index, D + 1> facet_ends(const LevelSetMesh<D>& front, Index f) {
   return ends;
 }
 
+// Lowers *at to value if smaller, from any thread.
+template <typename T>
+void atomic_min(T* at, T value) {
+  T seen = __atomic_load_n(at, __ATOMIC_RELAXED);
+  while (value < seen && !__atomic_compare_exchange_n(at, &seen, value, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+  }
+}
+
+// A non-negative double's bits order as the double does.
+std::uint64_t bits_of(double d) {
+  std::uint64_t b;
+  std::memcpy(&b, &d, sizeof b);
+  return b;
+}
+
 // The vertices of the crossed simplices: the ends of the mesh edges under every facet
-// measured against that facet, whatever the band (they carry the zero set). Returns the
-// seeded vertices.
+// measured against that facet, whatever the band (they carry the zero set). Each takes its
+// nearest facet, the lowest index among equals: the smallest distance, then the smallest
+// facet at that distance, both as atomic minima, so the result does not depend on the
+// threads. Returns the seeded vertices in index order.
 template <int D>
 std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, Closest& c, int threads) {
   const long nf = long(front.facets.size());
+  const long nv = long(mesh.vertices.size());
+  LargeVector<std::array<Index, D + 1>> ends(front.facets.size());
   LargeVector<std::array<double, D + 1>> d(front.facets.size());
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (long f = 0; f < nf; ++f) {
-    const auto ends = facet_ends(front, Index(f));
-    for (int i = 0; i <= D && ends[i] >= 0; ++i) d[f][i] = facet_distance(front, Index(f), mesh.vertices[ends[i]]);
-  }
-  std::vector<Index> seeded;
-  for (Index f = 0; f < Index(nf); ++f) {
-    const auto ends = facet_ends(front, f);
-    for (int i = 0; i <= D && ends[i] >= 0; ++i) {
-      const Index v = ends[i];
-      if (!c.improves(v, d[f][i], f)) continue;
-      if (c.facet[v] < 0) seeded.push_back(v);
-      c.distance[v] = d[f][i];
-      c.facet[v] = f;
+  LargeVector<std::uint64_t> nearest(mesh.vertices.size(), bits_of(kInfinity));
+  LargeVector<Index> facet(mesh.vertices.size(), std::numeric_limits<Index>::max());
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (long f = 0; f < nf; ++f) {
+      ends[f] = facet_ends(front, Index(f));
+      for (int i = 0; i <= D && ends[f][i] >= 0; ++i) {
+        d[f][i] = facet_distance(front, Index(f), mesh.vertices[ends[f][i]]);
+        atomic_min(&nearest[ends[f][i]], bits_of(d[f][i]));
+      }
+    }
+#pragma omp for schedule(static)
+    for (long f = 0; f < nf; ++f) {
+      for (int i = 0; i <= D && ends[f][i] >= 0; ++i) {
+        if (bits_of(d[f][i]) == nearest[ends[f][i]]) atomic_min(&facet[ends[f][i]], Index(f));
+      }
+    }
+#pragma omp for schedule(static)
+    for (long v = 0; v < nv; ++v) {
+      if (facet[v] == std::numeric_limits<Index>::max()) continue;
+      std::memcpy(&c.distance[v], &nearest[v], sizeof(double));
+      c.facet[v] = facet[v];
     }
   }
-  std::sort(seeded.begin(), seeded.end());
+  std::vector<Index> seeded;
+  for (long v = 0; v < nv; ++v) {
+    if (c.facet[v] >= 0) seeded.push_back(Index(v));
+  }
   return seeded;
 }
 
