@@ -222,7 +222,6 @@ Points<D> QuadricImplicit<D>::project(Points<D>& points, int threads) const {
     blend(points, nearest, k, f, &n, threads);
     for (std::size_t i = 0; i < points.size(); ++i) points[i] -= f[i] * n[i];
   }
-  blend(points, nearest, k, f, &n, threads);
   return n;
 }
 
