@@ -472,8 +472,9 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     // data), it extrapolates: the tangent planes of a knife edge's sides run on past its tip
     // (measured on the bunny's ear). From 1 to 2 spacings the front takes over (measured: from
     // 1.5 to 2.5, the noisy bunny kept fins on its ear tips, Hausdorff distance up to 1.9e-2 of
-    // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the data is left to the
-    // fit (there |F| is v's distance to the data: measured, the noisy two spheres got a void).
+    // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the
+    // data is left to the fit (there |F| is v's distance to the data: measured, the noisy two
+    // spheres got a void).
     if (values[v] < 0.0 && u[v] > 0.0 && -values[v] < 0.5 * distance[v]) {
       const double w = std::clamp((distance[v] - kHandover * scale[v]) / scale[v], 0.0, 1.0);
       values[v] = (1.0 - w) * values[v] + w * u[v];

@@ -64,9 +64,6 @@ struct FacetBalls {
 struct Closest {
   LargeVector<double> distance;
   LargeVector<Index> facet;
-  bool improves(Index v, double d, Index f) const {
-    return d < distance[v] || (d == distance[v] && f < facet[v]);
-  }
 };
 
 // The distinct ends of the mesh edges under facet f's vertices: all lie in one simplex, so at
@@ -108,7 +105,6 @@ template <int D>
 std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front, Closest& c, int threads) {
   const long nf = long(front.facets.size());
   const long nv = long(mesh.vertices.size());
-  LargeVector<std::array<Index, D + 1>> ends(front.facets.size());
   LargeVector<std::array<double, D + 1>> d(front.facets.size());
   LargeVector<std::uint64_t> nearest(mesh.vertices.size(), bits_of(kInfinity));
   LargeVector<Index> facet(mesh.vertices.size(), std::numeric_limits<Index>::max());
@@ -116,16 +112,18 @@ std::vector<Index> seed(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& front
   {
 #pragma omp for schedule(static)
     for (long f = 0; f < nf; ++f) {
-      ends[f] = facet_ends(front, Index(f));
-      for (int i = 0; i <= D && ends[f][i] >= 0; ++i) {
-        d[f][i] = facet_distance(front, Index(f), mesh.vertices[ends[f][i]]);
-        atomic_min(&nearest[ends[f][i]], bits_of(d[f][i]));
+      const auto ends = facet_ends(front, Index(f));
+      for (int i = 0; i <= D && ends[i] >= 0; ++i) {
+        d[f][i] = facet_distance(front, Index(f), mesh.vertices[ends[i]]);
+        atomic_min(&nearest[ends[i]], bits_of(d[f][i]));
       }
     }
+    // Recomputed rather than stored: the renormalisation is the solver's memory peak.
 #pragma omp for schedule(static)
     for (long f = 0; f < nf; ++f) {
-      for (int i = 0; i <= D && ends[f][i] >= 0; ++i) {
-        if (bits_of(d[f][i]) == nearest[ends[f][i]]) atomic_min(&facet[ends[f][i]], Index(f));
+      const auto ends = facet_ends(front, Index(f));
+      for (int i = 0; i <= D && ends[i] >= 0; ++i) {
+        if (bits_of(d[f][i]) == nearest[ends[i]]) atomic_min(&facet[ends[i]], Index(f));
       }
     }
 #pragma omp for schedule(static)
