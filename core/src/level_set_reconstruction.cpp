@@ -190,6 +190,9 @@ void check_options(const ReconstructionOptions& o) {
   factor(o.pin_factor, "pin_factor", 0.0, 20.0, "use 2 (local scales)");
   factor(o.tolerance_factor, "tolerance_factor", 0.0, 20.0, "use 1 (local scales)");
   factor(o.curvature_factor, "curvature_factor", -1e-300, 100.0, "use 0.25");
+  if (!(o.start_offset >= 0.0 && o.start_offset < o.gap_factor)) {
+    bad("start_offset must be in [0, gap_factor)", "use 0.5 (local spacings) or 0 (the flood's boundary)");
+  }
   if (!(o.hole_radius < 0.5)) bad("hole_radius must be below 0.5 (unit box)", "use -1 (automatic), 0 (no closing) or e.g. 0.06");
   if (o.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
@@ -700,6 +703,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                             : std::vector<double>();
     u = tagged_start(mesh, neighbours, d, distance, scale, guard, o.gap_factor, band, o.threads);
     r.tagged_start = u.size() > 0;
+    const bool has_rims = std::find(sampling.rim.begin(), sampling.rim.end(), 1) != sampling.rim.end();
+    if (D == 3 && r.tagged_start && !has_rims) u += o.start_offset * scale;
     if (!r.tagged_start) u = initial_field(mesh, data, InitialFront::enclosing, r.h_min);
   } else {
     u = initial_field(mesh, data, o.initial_front, r.h_min);

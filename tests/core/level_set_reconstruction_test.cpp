@@ -256,6 +256,12 @@ TEST(LevelSetReconstruction, RejectsAlphaOfTheWrongSignForTheStart) {
   o = ReconstructionOptions();
   o.max_iterations = 0;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
+  // A start moved as far as the flood's gap (or away from the data) would not be outside it.
+  o = ReconstructionOptions();
+  for (double offset : {-0.5, o.gap_factor, std::nan("")}) {
+    o.start_offset = offset;
+    EXPECT_THROW(reconstruct<2>(data, o), InvalidInput) << offset;
+  }
 }
 
 // The cap binds where the sampling is finer than it: a cap of 16 on a circle sampled every 1/800
