@@ -191,7 +191,11 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c,
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
-               std::to_string(ls.getStatus().iterations) + " steps;" + stage_breakdown(ls.getStatus().stage_seconds);
+               std::to_string(ls.getStatus().iterations) + " steps;" +
+               (ls.getStatus().sealed_cavities > 0
+                    ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) + " cavity(ies);"
+                    : std::string()) +
+               stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
     if (method == "lsrecon") return out;

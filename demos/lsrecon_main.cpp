@@ -333,6 +333,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"spacing_input_units", r.spacing},
                  {"noise_input_units", r.noise},
                  {"tagged_start", r.tagged_start},
+                 {"sealed_cavities", r.sealed_cavities},
                  {"stage_seconds", stages},
                  {"total_seconds", total},
                  {"peak_memory_mib", lsr::demos::peak_memory_mib()},
@@ -388,6 +389,11 @@ void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, boo
   if (r.outlier_points > 0) {
     std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than %g local spacings); "
                          "--keep-outliers keeps them\n", r.outlier_points, outlier_factor);
+  }
+  if (r.sealed_cavities > 0) {
+    std::fprintf(stderr, "lsrecon: closed %d opening(s) narrower than the hole radius through which the outside "
+                         "reached an inside (an open end a sampling hole made); --hole-radius 0 leaves them open\n",
+                 r.sealed_cavities);
   }
   if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
     std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "

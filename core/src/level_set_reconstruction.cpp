@@ -4,6 +4,7 @@
 /// renormalise, stopping test) -> extraction of the best iterate -> back to input coordinates.
 #include "lsrecon/core/level_set_reconstruction.h"
 
+#include "lsrecon/core/cavity_sealing.h"
 #include "lsrecon/core/level_set_volume_mesh.h"
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/merge_without_joins.h"
@@ -352,11 +353,13 @@ Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbour
 // vertex also blocks when the discs pass within half its longest edge (`edge_guard`, empty
 // without discs), so that no edge jumps the discs' plane; "over a hole" meaning the discs are
 // nearer than the points by more than the gap, so that a coarse mesh over sampled parts does not
-// push the start out. Empty when nothing is reachable (data against the walls).
+// push the start out. Cavities entered through an opening narrower than `seal_radius` are given
+// back (cavity_sealing.h; `sealed`). Empty when nothing is reachable (data against the walls).
 template <int D>
 Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
-                             const std::vector<double>& edge_guard, double gap_factor, double band, int threads) {
+                             const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
+                             SealedCavities& sealed, int threads) {
   const std::size_t n = mesh.vertices.size();
   std::vector<char> passable(n);
   for (std::size_t v = 0; v < n; ++v) {
@@ -364,7 +367,25 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
     passable[v] = attraction[v] > gap &&
                   (edge_guard.empty() || attraction[v] > std::min(edge_guard[v], distance[v] - gap));
   }
-  return flood_distance(mesh, neighbours, flood_from_walls(mesh, passable), band, threads);
+  std::vector<char> reached = flood_from_walls(mesh, passable);
+  sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
+  return flood_distance(mesh, neighbours, reached, band, threads);
+}
+
+// Flags the vertices within `radius` of a `seed` vertex (all false without seeds).
+template <int D>
+std::vector<char> near_any(const Points<D>& vertices, const std::vector<char>& seed, double radius, int threads) {
+  Points<D> seeds;
+  for (std::size_t v = 0; v < seed.size(); ++v) {
+    if (seed[v]) seeds.push_back(vertices[v]);
+  }
+  std::vector<char> out(vertices.size(), 0);
+  if (seeds.empty()) return out;
+  const NearestPointIndex<D> index(std::move(seeds));
+  std::vector<double> dist;
+  index.query(vertices, dist, nullptr, threads);
+  for (std::size_t v = 0; v < vertices.size(); ++v) out[v] = dist[v] <= radius;
+  return out;
 }
 
 // Half the longest edge at each vertex within `near` of the data (0 elsewhere): see tagged_start.
@@ -446,8 +467,8 @@ Points<D> oriented_normals(const LocalSampling<D>& s, const std::vector<Location
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
-                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole, bool volume,
-                int threads) {
+                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
+                const std::vector<char>& near_opening, bool volume, int threads) {
   // kUnsupported: past the largest empty disc (below); kHandover: where unsupported solid starts
   // going to the front.
   constexpr double band_factor = 3.0, kUnsupported = 1.5, kHandover = 1.0;
@@ -462,12 +483,30 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   }
   std::vector<double> f;
   fit.evaluate(band, f, nullptr, threads);
+  // Near a sealed opening, the share of F in values: the output is projected onto F only that
+  // far (below), as F extrapolates where the front took over (measured: projected in full, the
+  // front's cap over a tube's open end turned facets inside out). Elsewhere in full (measured:
+  // limited everywhere, the clean sphere's Hausdorff distance x3.9).
+  std::vector<double> fit_share;
+  if (!near_opening.empty()) {
+    fit_share.resize(values.size());
+    for (std::size_t v = 0; v < values.size(); ++v) fit_share[v] = near_opening[v] ? 0.0 : 1.0;
+  }
+  auto limit_share = [&](Index v, double share) {
+    if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] *= share;
+  };
   // The settled front lies within gap_factor spacings of the data: a fit that disagrees with its
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
   for (std::size_t k = 0; k < band.size(); ++k) {
     const Index v = band_vertices[k];
     const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
     values[v] = trusted ? f[k] : u[v];
+    if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] = trusted ? 1.0 : 0.0;
+    auto hand_over = [&](double start) {
+      const double w = std::clamp((distance[v] - start * scale[v]) / scale[v], 0.0, 1.0);
+      values[v] = (1.0 - w) * values[v] + w * u[v];
+      limit_share(v, 1.0 - w);
+    };
     // Solid the fit adds outside the front must be near the data: the surface between random
     // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
     // and farther than one spacing from every sample on exp(-6) = 0.25% of its area. Where the
@@ -477,10 +516,13 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     // 1.5 to 2.5, the noisy bunny kept fins on its ear tips, Hausdorff distance up to 1.9e-2 of
     // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the
     // data is left to the fit (there |F| is v's distance to the data: measured, the noisy two
-    // spheres got a void).
-    if (values[v] < 0.0 && u[v] > 0.0 && -values[v] < 0.5 * distance[v]) {
-      const double w = std::clamp((distance[v] - kHandover * scale[v]) / scale[v], 0.0, 1.0);
-      values[v] = (1.0 - w) * values[v] + w * u[v];
+    // spheres got a void). Near a sealed opening (a tube's open end, where the front closes
+    // what the fits continue) the fit's distance is not asked: on the tube's axis past its end
+    // the fits' surface lies a tube radius away, nearer than half the distance to the rim
+    // (measured: a notched end, the tube's wall run on past the front's cap).
+    if (values[v] < 0.0 && u[v] > 0.0 &&
+        (-values[v] < 0.5 * distance[v] || (!near_opening.empty() && near_opening[std::size_t(v)]))) {
+      hand_over(kHandover);
     }
     // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
     // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
@@ -488,10 +530,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     // switching opened small handles at holes). Elsewhere only unsupported solid (above) is
     // handed over (measured: a handover wherever the fit is far from the data left the noisy
     // two spheres a third component in their neck).
-    if (!over_hole.empty() && over_hole[std::size_t(v)]) {
-      const double w = std::clamp((distance[v] - trust_factor * scale[v]) / scale[v], 0.0, 1.0);
-      values[v] = (1.0 - w) * values[v] + w * u[v];
-    }
+    if (!over_hole.empty() && over_hole[std::size_t(v)]) hand_over(trust_factor);
   }
   // The fit moves the surface and may remove what the front got wrong (bridges across a neck
   // it had not cut, handles of a noisy front), but not join what the front kept apart: where
@@ -511,7 +550,13 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   merge_without_joins<D>(mesh, front, values, may_join);
   absorb_small_parts<D>(mesh, neighbours, scale, values);
   r.surface = extract_closed_surface(mesh, values, threads);
+  const Points<D> extracted = fit_share.empty() ? Points<D>() : r.surface.vertices;
   r.normals = fit.project(r.surface.vertices, threads);
+  for (std::size_t i = 0; i < extracted.size(); ++i) {
+    const EdgePoint& e = r.surface.sources[i];
+    const double share = (1.0 - e.t) * fit_share[std::size_t(e.a)] + e.t * fit_share[std::size_t(e.b)];
+    if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
+  }
   attach_volume(r, mesh, values, volume);
 }
 
@@ -667,6 +712,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                           ? (4.0 + o.gap_factor) * scale.maxCoeff()
                           : std::numeric_limits<double>::infinity();
   std::vector<char> over_hole;  // the discs nearer than the points; empty without discs
+  std::vector<char> near_opening;  // within the hole radius of a sealed opening; empty without
   if (hole_radius > 0.0) {
     // Spanned holes: the front is attracted to the tangent discs (tangent_discs.h),
     // wherever a hole's discs can reach and the start's gap (plus a margin) beyond. Within the
@@ -701,7 +747,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     const std::vector<double> guard =
         hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + hole_radius).matrix())
                             : std::vector<double>();
-    u = tagged_start(mesh, neighbours, d, distance, scale, guard, o.gap_factor, band, o.threads);
+    SealedCavities sealed;
+    u = tagged_start(mesh, neighbours, d, distance, scale, guard, o.gap_factor, band, hole_radius, sealed, o.threads);
+    r.sealed_cavities = sealed.count;
+    if (sealed.count > 0) near_opening = near_any(mesh.vertices, sealed.mouth, hole_radius, o.threads);
     r.tagged_start = u.size() > 0;
     const bool has_rims = std::find(sampling.rim.begin(), sampling.rim.end(), 1) != sampling.rim.end();
     if (D == 3 && r.tagged_start && !has_rims) u += o.start_offset * scale;
@@ -809,7 +858,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, o.volume_mesh, o.threads);
+    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, near_opening, o.volume_mesh,
+               o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

@@ -203,6 +203,9 @@ struct ReconstructionResult {
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units
   double h_min = 0.0;               ///< the finest mesh size used, unit box
   bool tagged_start = false;        ///< the start was the tagged front (else a circle / sphere)
+  /// cavities the tagged start's flood entered through an opening narrower than the hole radius
+  /// and gave back (cavity_sealing.h): an open end that a sampling hole made
+  int sealed_cavities = 0;
   double noise = 0.0;               ///< estimated noise deviation of the data, input units
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;

@@ -57,6 +57,9 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     std::size_t skipped_points = 0;  ///< NaN / infinite points left out
     std::size_t outlier_points = 0;  ///< isolated points left out (no input normal either)
     std::size_t statistical_outlier_points = 0;  ///< left out by setStatisticalOutlierFilter's filter
+    /// insides closed behind an opening narrower than the hole radius (an open end that a
+    /// sampling hole made; lsr::ReconstructionResult::sealed_cavities)
+    int sealed_cavities = 0;
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
     std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };
