@@ -193,7 +193,8 @@ Produced run_method(const std::string& method, const lsr::demos::CompareCase& c,
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
                std::to_string(ls.getStatus().iterations) + " steps;" +
                (ls.getStatus().sealed_cavities > 0
-                    ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) + " cavity(ies);"
+                    ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) +
+                          (ls.getStatus().sealed_cavities == 1 ? " cavity;" : " cavities;")
                     : std::string()) +
                stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
