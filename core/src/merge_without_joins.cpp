@@ -96,6 +96,34 @@ std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const VertexNeighbour
 }
 
 template <int D>
+std::size_t fill_cut_off_voids(const SimplexMesh<D>& mesh, const Eigen::VectorXd& reference,
+                               std::vector<double>& values) {
+  const std::size_t nv = values.size();
+  std::vector<char> open(nv);
+  for (std::size_t v = 0; v < nv; ++v) open[v] = values[v] >= 0.0;
+  const std::vector<char> outside = flood_from_walls(mesh, open);
+  std::vector<char> enclosed(nv);
+  bool any = false;
+  for (std::size_t v = 0; v < nv; ++v) any |= (enclosed[v] = open[v] && !outside[v]) != 0;
+  if (!any) return 0;
+  for (std::size_t v = 0; v < nv; ++v) open[v] = reference[Eigen::Index(v)] >= 0.0;
+  const std::vector<char> was_outside = flood_from_walls(mesh, open);
+  const std::vector<Index> part = vertex_components(mesh, enclosed);
+  std::vector<char> cut_off(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (enclosed[v] && was_outside[v]) cut_off[std::size_t(part[v])] = 1;
+  }
+  std::size_t filled = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (enclosed[v] && cut_off[std::size_t(part[v])]) {
+      values[v] = -std::max(values[v], std::numeric_limits<double>::min());
+      ++filled;
+    }
+  }
+  return filled;
+}
+
+template <int D>
 LinkPieces link_pieces(const SimplexMesh<D>& mesh, const std::vector<Index>& star, Index v,
                        const std::vector<char>& negative) {
   thread_local LinkSets sets;
@@ -214,6 +242,8 @@ template std::size_t absorb_small_parts<2>(const SimplexMesh<2>&, const VertexNe
                                            std::vector<double>&);
 template std::size_t absorb_small_parts<3>(const SimplexMesh<3>&, const VertexNeighbours&, const Eigen::VectorXd&,
                                            std::vector<double>&);
+template std::size_t fill_cut_off_voids<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, std::vector<double>&);
+template std::size_t fill_cut_off_voids<3>(const SimplexMesh<3>&, const Eigen::VectorXd&, std::vector<double>&);
 template LinkPieces link_pieces<2>(const SimplexMesh<2>&, const std::vector<Index>&, Index, const std::vector<char>&);
 template LinkPieces link_pieces<3>(const SimplexMesh<3>&, const std::vector<Index>&, Index, const std::vector<char>&);
 template std::size_t merge_without_joins<2>(const SimplexMesh<2>&, const Eigen::VectorXd&, std::vector<double>&,

@@ -240,5 +240,34 @@ TEST(MergeWithoutJoins, AbsorbsOnlyPartsNarrowerThanTheWidth) {
   EXPECT_EQ(genus_of(mesh, values), (std::vector<int>{0, 0}));  // the ball and its cavity
 }
 
+TEST(MergeWithoutJoins, FillsAVoidItCutOffTheOutsideNotOneTheReferenceEnclosed) {
+  // A ball with two cavities: one reached from outside through a tunnel in the reference, one
+  // enclosed. The wanted values close the tunnel; the merge may (a cut), leaving a void that
+  // nothing in the reference bounded. It is filled; the enclosed cavity stays.
+  const SimplexMesh<3> mesh = uniform_mesh<3>(40);
+  const Vec<3> reached(0.5, 0.5, 0.65), enclosed(0.5, 0.5, 0.3);
+  const auto solid = [&](const Vec<3>& x) {
+    return std::max({ball(x, kCentre, 0.35), -ball(x, reached, 0.08), -ball(x, enclosed, 0.08)});
+  };
+  const Eigen::VectorXd front = sample<3>(mesh, [&](const Vec<3>& x) {
+    return std::max(solid(x), -std::max(std::hypot(x.x() - 0.5, x.y() - 0.5) - 0.05, 0.65 - x.z()));
+  });
+  std::vector<double> values = as_vector(sample<3>(mesh, solid));
+  EXPECT_EQ(merge_without_joins(mesh, front, values), 0u);
+  ASSERT_EQ(genus_of(mesh, values), (std::vector<int>{0, 0, 0}));
+  EXPECT_GT(fill_cut_off_voids(mesh, front, values), 0u);
+  EXPECT_EQ(genus_of(mesh, values), (std::vector<int>{0, 0}));
+  for (std::size_t v = 0; v < values.size(); ++v) {
+    if ((mesh.vertices[v] - reached).norm() < 0.06) {
+      EXPECT_LT(values[v], 0.0) << "void vertex " << v;
+    }
+    if ((mesh.vertices[v] - enclosed).norm() < 0.06) {
+      EXPECT_GE(values[v], 0.0) << "cavity vertex " << v;
+    }
+  }
+  // Without a cut there is nothing to fill.
+  EXPECT_EQ(fill_cut_off_voids(mesh, sample<3>(mesh, solid), values), 0u);
+}
+
 }  // namespace
 }  // namespace lsr

@@ -215,6 +215,32 @@ TEST(RandomReconstruction, HolesAreSpannedByDefault) {
   EXPECT_LE(spanned.distances.hausdorff, fit_bound(4000, 4 * kPi * kPi * 0.4, R) + std::pow(a, 4) / (8 * R * R * R));
 }
 
+// Over a spanned hole nothing pins the front, and on a mesh the vertices next to the discs keep
+// a distance up to half an edge: a long run (the two spheres' neck takes 20-30 steps) lets the
+// front creep through them, 0.13 into a sphere on this draw, with a small handle in its zero
+// set at that hole. The fit's solid stays there instead of going back to the front.
+TEST(RandomReconstruction, AFrontThatCreptIntoAHoleLeavesNoHandle) {
+  const TestShape shape = make_test_shape("two-spheres");
+  SamplingVariant v;
+  v.holes = 4;
+  const Outcome o = run(shape, sample_test_shape(shape, 20000, v, 4));
+  EXPECT_NE(o.r.status, ReconstructionStatus::cancelled);
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, (std::vector<int>{0, 0}));
+}
+
+// The same rule where the front crept up the limb through a hole at its root: the fit's solid
+// closes the hole over the crept front, which cuts a void off the outside inside the tube (26
+// vertices, 2 spacings wide: too wide to pass for a bubble). No sample lies on it; it is filled.
+TEST(RandomReconstruction, AVoidTheFitCutOffIsFilled) {
+  const TestShape shape = make_test_shape("limb");
+  SamplingVariant v;
+  v.holes = 4;
+  const Outcome o = run(shape, sample_test_shape(shape, 20000, v, 2011));
+  EXPECT_TRUE(o.topology.watertight);
+  EXPECT_EQ(o.genus, std::vector<int>{0});
+}
+
 // The limb's tip cut off where its tube (radius r = 0.1, 3.7 spacings at 20k points) is
 // straight: a hole that takes a thin part's end. The rims' tangent discs would continue the
 // tube, not close it, and the start's flood runs up the tube into the ball; the cavity seal

@@ -39,6 +39,17 @@ template <int D>
 std::size_t absorb_small_parts(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                                const Eigen::VectorXd& width, std::vector<double>& values);
 
+/// @brief Turns to the negative side the parts of {values >= 0} that reach no box wall but
+/// whose vertices reached one in {reference >= 0}: voids that a merge (which may cut parts)
+/// cut off the outside, where the reference had none. A closed void is a surface no sample
+/// lies on unless the reference found it; parts already enclosed in the reference stay.
+/// @param reference #V values (walls non-negative)
+/// @param values #V values (walls non-negative), changed in place
+/// @return the number of vertices that changed sign
+template <int D>
+std::size_t fill_cut_off_voids(const SimplexMesh<D>& mesh, const Eigen::VectorXd& reference,
+                               std::vector<double>& values);
+
 /// @brief How many connected pieces the negative and the non-negative vertices of v's link form.
 struct LinkPieces {
   int negative = 0;
