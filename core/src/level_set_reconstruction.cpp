@@ -507,35 +507,37 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
       values[v] = (1.0 - w) * values[v] + w * u[v];
       limit_share(v, 1.0 - w);
     };
-    // Solid the fit adds outside the front must be near the data: the surface between random
-    // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
-    // and farther than one spacing from every sample on exp(-6) = 0.25% of its area. Where the
-    // fit's surface passes farther from the data (nearer to v than half v's distance to the
-    // data), it extrapolates: the tangent planes of a knife edge's sides run on past its tip
-    // (measured on the bunny's ear). From 1 to 2 spacings the front takes over (measured: from
-    // 1.5 to 2.5, the noisy bunny kept fins on its ear tips, Hausdorff distance up to 1.9e-2 of
-    // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the
-    // data is left to the fit (there |F| is v's distance to the data: measured, the noisy two
-    // spheres got a void). Near a sealed opening (a tube's open end, where the front closes
-    // what the fits continue) the fit's distance is not asked: on the tube's axis past its end
-    // the fits' surface lies a tube radius away, nearer than half the distance to the rim
-    // (measured: a notched end, the tube's wall run on past the front's cap).
-    // Over a spanned hole nothing pins the front, and on a mesh the vertices next to the discs
-    // keep a distance up to half an edge, through which a long run lets it creep into the solid
-    // (measured: 0.13 into a sphere by step 26 of the holey two spheres, with a small handle in
-    // its zero set, on 5 of 80 draws of the holey clouds). There the fit's solid stays.
-    const bool crept = !over_hole.empty() && over_hole[std::size_t(v)] && values[v] < 0.0 && u[v] > 0.0;
-    if (!crept && values[v] < 0.0 && u[v] > 0.0 &&
-        (-values[v] < 0.5 * distance[v] || (!near_opening.empty() && near_opening[std::size_t(v)]))) {
-      hand_over(kHandover);
-    }
     // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
     // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
     // front takes over, gradually, so that the two zero sets join without a step (measured:
-    // switching opened small handles at holes). Elsewhere only unsupported solid (above) is
-    // handed over (measured: a handover wherever the fit is far from the data left the noisy
-    // two spheres a third component in their neck).
-    if (!over_hole.empty() && over_hole[std::size_t(v)] && !crept) hand_over(trust_factor);
+    // switching opened small handles at holes). But nothing pins the front there, and on a mesh
+    // the vertices next to the discs keep a distance up to half an edge, through which a long
+    // run lets it creep into the solid (measured: 0.13 into a sphere by step 26 of the holey two
+    // spheres, with a small handle in its zero set, on 5 of 80 draws of the holey clouds): where
+    // the fit adds solid there, the fit's solid stays.
+    const bool adds_solid = values[v] < 0.0 && u[v] > 0.0;
+    if (!over_hole.empty() && over_hole[std::size_t(v)]) {
+      if (!adds_solid) hand_over(trust_factor);
+      continue;
+    }
+    // Elsewhere, solid the fit adds outside the front must be near the data (measured: a
+    // handover wherever the fit is far from the data left the noisy two spheres a third
+    // component in their neck): the surface between random samples lies within about 1.45
+    // spacings of one (the largest empty disc, local_sampling.h), and farther than one spacing
+    // from every sample on exp(-6) = 0.25% of its area. Where the fit's surface passes farther
+    // from the data (nearer to v than half v's distance to the data), it extrapolates: the
+    // tangent planes of a knife edge's sides run on past its tip (measured on the bunny's ear).
+    // From 1 to 2 spacings the front takes over (measured: from 1.5 to 2.5, the noisy bunny kept
+    // fins on its ear tips, Hausdorff distance up to 1.9e-2 of the diagonal, 2.8x Poisson's with
+    // the true normals). A pit of the front deep inside the data is left to the fit (there |F|
+    // is v's distance to the data: measured, the noisy two spheres got a void). Near a sealed
+    // opening (a tube's open end, where the front closes what the fits continue) the fit's
+    // distance is not asked: on the tube's axis past its end the fits' surface lies a tube
+    // radius away, nearer than half the distance to the rim (measured: a notched end, the
+    // tube's wall run on past the front's cap).
+    if (adds_solid && (-values[v] < 0.5 * distance[v] || (!near_opening.empty() && near_opening[std::size_t(v)]))) {
+      hand_over(kHandover);
+    }
   }
   // The fit moves the surface and may remove what the front got wrong (bridges across a neck
   // it had not cut, handles of a noisy front), but not join what the front kept apart: where
@@ -543,7 +545,9 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   // opens handles (measured: the cup with the 10x density gradient and the holey double torus
   // got one each). Far from the data (past the largest empty disc, as above) the front is held
   // by curvature alone and a guess: there the fit may join too (measured: a coarse front
-  // spanned a torus's hole). Bubbles and specks narrower than a spacing go last (measured: a
+  // spanned a torus's hole). A void the merge cut off the outside bounds no data and is filled
+  // (measured: the fit's solid over a hole the front had crept up the holey limb through left
+  // one 2 spacings wide). Bubbles and specks narrower than a spacing go last (measured: a
   // one-vertex void in the noisy, holey limb and one in the cup's wall).
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
