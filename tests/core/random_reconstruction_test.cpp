@@ -229,10 +229,12 @@ TEST(RandomReconstruction, AFrontThatCreptIntoAHoleLeavesNoHandle) {
   EXPECT_EQ(o.genus, (std::vector<int>{0, 0}));
 }
 
-// The same rule where the front crept up the limb through a hole at its root: the fit's solid
-// closes the hole over the crept front, which cuts a void off the outside inside the tube (26
-// vertices, 2 spacings wide: too wide to pass for a bubble). No sample lies on it; it is filled.
-TEST(RandomReconstruction, AVoidTheFitCutOffIsFilled) {
+// The same rule on the corpus's holey limb, where the flood slips into the limb at its root
+// hole: kept wherever the fit adds solid over a hole, the fit's solid closed the hole over the
+// front and the merge cut a void off the outside inside the tube (26 vertices, 2 spacings wide,
+// too wide for a bubble). The rule keeps the fit only where the front lies beyond the data's
+// gap, and fill_cut_off_voids fills any such void: one closed surface.
+TEST(RandomReconstruction, AFrontThatCreptUpALimbLeavesNoVoid) {
   const TestShape shape = make_test_shape("limb");
   SamplingVariant v;
   v.holes = 4;
