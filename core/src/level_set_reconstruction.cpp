@@ -549,8 +549,8 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   // got one each). Far from the data (past the largest empty disc, as above) the front is held
   // by curvature alone and a guess: there the fit may join too (measured: a coarse front
   // spanned a torus's hole). A void the merge cut off the outside bounds no data and is filled
-  // (measured: the fit's solid over a hole the front had crept up the holey limb through left
-  // one 2 spacings wide). Bubbles and specks narrower than a spacing go last (measured: a
+  // (measured: with the fit's solid kept over every hole the front had crept through, one 2
+  // spacings wide inside the holey limb). Bubbles and specks narrower than a spacing go last (measured: a
   // one-vertex void in the noisy, holey limb and one in the cup's wall).
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
