@@ -542,16 +542,16 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     // two spheres a third component in their neck).
     if (hole) hand_over(trust_factor);
   }
-  // The fit moves the surface and may remove what the front got wrong (bridges across a neck
-  // it had not cut, handles of a noisy front), but not join what the front kept apart: where
-  // the two sides of a thin part or a crease lie within a fit's neighbourhood, its rounding
-  // opens handles (measured: the cup with the 10x density gradient and the holey double torus
-  // got one each). Far from the data (past the largest empty disc, as above) the front is held
-  // by curvature alone and a guess: there the fit may join too (measured: a coarse front
-  // spanned a torus's hole). A void the merge cut off the outside bounds no data and is filled
-  // (measured: with the fit's solid kept over every hole the front had crept through, one 2
-  // spacings wide inside the holey limb). Bubbles and specks narrower than a spacing go last (measured: a
-  // one-vertex void in the noisy, holey limb and one in the cup's wall).
+  // The fit moves the surface and may remove what the front got wrong (bridges across a neck it
+  // had not cut, handles of a noisy front), but not join what the front kept apart: where the two
+  // sides of a thin part or a crease lie within a fit's neighbourhood, its rounding opens handles
+  // (measured: the cup with the 10x density gradient and the holey double torus got one each).
+  // Far from the data (past the largest empty disc, as above) the front is held by curvature
+  // alone and a guess: there the fit may join too (measured: a coarse front spanned a torus's
+  // hole). A void the merge cut off the outside bounds no data and is filled (measured: with the
+  // fit's solid kept over every hole the front had crept through, one 2 spacings wide inside the
+  // holey limb). Bubbles and specks narrower than a spacing go last (measured: a one-vertex void
+  // in the noisy, holey limb and one in the cup's wall).
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
   cap_at_walls<D>(mesh, values);
