@@ -335,6 +335,24 @@ Eigen::VectorXd two_sided_drive(const P1Operators<D>& ops, const Eigen::VectorXd
   return drive;
 }
 
+// The one-sided drive, with d := 0 where the front has passed its nearest data point (faces
+// away from it: alpha grad d . grad u < 0, alpha the direction it moves) by more than `gap` (the data's gap there): the one-sided
+// term would go on pulling it inward, into a pit under one of the widest empty discs of a
+// random sample, which the stopping test's front side then never accepts. Not `near_hole`
+// (empty: nowhere): a front that crept past a hole's rim is the fit's to correct (attach_fit),
+// and resting it there left a handle (measured: the noisy holey trefoil of seed 4).
+template <int D>
+Eigen::VectorXd drive_resting_past_data(const P1Operators<D>& ops, const Eigen::VectorXd& d, const Points<D>& away,
+                                        const Eigen::VectorXd& u, const std::vector<double>& dist, const Eigen::VectorXd& gap,
+                                        const std::vector<char>& near_hole, double alpha) {
+  Eigen::VectorXd drive = two_sided_drive(ops, d, away, u);
+  for (Eigen::Index v = 0; v < drive.size(); ++v) {
+    const bool passed = alpha * drive[v] < 0.0 && dist[std::size_t(v)] > gap[v];
+    drive[v] = passed && (near_hole.empty() || !near_hole[std::size_t(v)]) ? 0.0 : d[v];
+  }
+  return drive;
+}
+
 // The signed distance to the boundary of the flooded vertices (> 0 in the flood); empty when
 // the flood is empty or everything.
 template <int D>
@@ -775,7 +793,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // Two-sided attraction: the unit direction away from the nearest data point per vertex.
   Points<D> away_from_data;
-  if (o.two_sided) {
+  const bool rest_past_data = o.rest_past_data && !o.two_sided;
+  std::vector<char> near_hole;  // within a hole's radius of a vertex over it; empty without
+  if (rest_past_data && !over_hole.empty()) near_hole = near_any(mesh.vertices, over_hole, hole_radius, o.threads);
+  if (o.two_sided || rest_past_data) {
     away_from_data.resize(nv, Vec<D>::Zero());
     for (std::size_t v = 0; v < nv; ++v) {
       if (dist[v] > 0.0) away_from_data[v] = (mesh.vertices[v] - data.points()[std::size_t(nearest[v])]) / dist[v];
@@ -803,7 +824,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       progress.update("solve", progress_fraction);
       SolverReport solve;
       before = u;
-      stepper.advance(o.two_sided ? two_sided_drive(ops, d, away_from_data, u) : d, u, step, &solve);
+      if (o.two_sided) {
+        stepper.advance(two_sided_drive(ops, d, away_from_data, u), u, step, &solve);
+      } else if (rest_past_data) {
+        stepper.advance(drive_resting_past_data(ops, d, away_from_data, u, dist, o.gap_factor * scale, near_hole, step.alpha), u, step, &solve);
+      } else {
+        stepper.advance(d, u, step, &solve);
+      }
       const double displacement = front_displacement(before, u, ops.ball_measure, scale, D, front_area);
       r.solver_iterations += solve.iterations;
       clock.end("solve");

@@ -243,6 +243,18 @@ TEST(RandomReconstruction, AFrontThatCreptUpALimbLeavesNoVoid) {
   EXPECT_EQ(o.genus, std::vector<int>{0});
 }
 
+// A front that has passed the data under one of the widest empty discs of a random sample
+// (this draw: a disc of radius 1.7 spacings on the limb's ball). The one-sided drive went on
+// pulling it in, about 2.4 spacings deep, past the pinned cells' 2, and the front side of the
+// stopping test (within 3 spacings of the data) failed more at every step: "not converged".
+// At rest there, it converges.
+TEST(RandomReconstruction, AFrontPastTheDataRestsAndConverges) {
+  const TestShape shape = make_test_shape("limb");
+  const Outcome o = run(shape, sample_test_shape(shape, 20000, SamplingVariant{}, 3));
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
+  EXPECT_EQ(o.genus, std::vector<int>{0});
+}
+
 // The limb's tip cut off where its tube (radius r = 0.1, 3.7 spacings at 20k points) is
 // straight: a hole that takes a thin part's end. The rims' tangent discs would continue the
 // tube, not close it, and the start's flood runs up the tube into the ball; the cavity seal
