@@ -336,11 +336,11 @@ Eigen::VectorXd two_sided_drive(const P1Operators<D>& ops, const Eigen::VectorXd
 }
 
 // The one-sided drive, with d := 0 where the front has passed its nearest data point (faces
-// away from it: alpha grad d . grad u < 0, alpha the direction it moves) by more than `gap` (the data's gap there): the one-sided
-// term would go on pulling it inward, into a pit under one of the widest empty discs of a
-// random sample, which the stopping test's front side then never accepts. Not `near_hole`
+// away from it: alpha grad d . grad u < 0, alpha's sign the way it moves) by more than `gap`:
+// the one-sided term would go on pulling it on, into a pit under one of the widest empty discs
+// of a random sample, which the stopping test's front side then never accepts. Not `near_hole`
 // (empty: nowhere): a front that crept past a hole's rim is the fit's to correct (attach_fit),
-// and resting it there left a handle (measured: the noisy holey trefoil of seed 4).
+// and resting it there left handles (measured: the noisy holey trefoils of seeds 2 and 4).
 template <int D>
 Eigen::VectorXd drive_resting_past_data(const P1Operators<D>& ops, const Eigen::VectorXd& d, const Points<D>& away,
                                         const Eigen::VectorXd& u, const std::vector<double>& dist, const Eigen::VectorXd& gap,
@@ -791,7 +791,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   clock.end("setup");
 
-  // Two-sided attraction: the unit direction away from the nearest data point per vertex.
+  // For the two-sided drive and the rest past the data: the unit direction away from the
+  // nearest data point per vertex.
   Points<D> away_from_data;
   const bool rest_past_data = o.rest_past_data && !o.two_sided;
   std::vector<char> near_hole;  // within a hole's radius of a vertex over it; empty without
@@ -827,7 +828,9 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
       if (o.two_sided) {
         stepper.advance(two_sided_drive(ops, d, away_from_data, u), u, step, &solve);
       } else if (rest_past_data) {
-        stepper.advance(drive_resting_past_data(ops, d, away_from_data, u, dist, o.gap_factor * scale, near_hole, step.alpha), u, step, &solve);
+        const Eigen::VectorXd gap = o.gap_factor * scale;
+        stepper.advance(drive_resting_past_data(ops, d, away_from_data, u, dist, gap, near_hole, step.alpha), u, step,
+                        &solve);
       } else {
         stepper.advance(d, u, step, &solve);
       }

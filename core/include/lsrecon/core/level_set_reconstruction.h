@@ -139,10 +139,10 @@ struct ReconstructionOptions {
   bool pin_reached_data = true;
   /// No drive (d := 0) where the front has passed its nearest data point (faces away from it)
   /// farther than gap_factor s from the data, except within a hole's radius of a spanned hole;
-  /// curvature still acts there. Without it the
-  /// one-sided term pulls such a front on inward: on 2 of 40 clean 20k draws it sank about 2.4
-  /// spacings into one of the widest empty discs, past the pinned cells, and the run stopped
-  /// "not converged" (README.md, Stopping). Ignored with two_sided.
+  /// curvature still acts there. Without it the one-sided term pulls such a front on inward:
+  /// on 2 of 40 clean 20k draws it sank about 2.4 spacings into one of the widest empty discs,
+  /// past the pinned cells, and the run stopped "not converged" (README.md, Stopping). Ignored
+  /// with two_sided.
   bool rest_past_data = true;
   /// Place the surface by a fit through the data once the front has settled: PCA normals
   /// oriented by grad u, local quadrics blended on the band around the front
