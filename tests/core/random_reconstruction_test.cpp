@@ -218,13 +218,14 @@ TEST(RandomReconstruction, HolesAreSpannedByDefault) {
 // Over a spanned hole nothing pins the front, and on a mesh the vertices next to the discs keep
 // a distance up to half an edge: a long run (the two spheres' neck takes 20-30 steps) lets the
 // front creep through them, 0.13 into a sphere on this draw, with a small handle in its zero
-// set at that hole. The fit's solid stays there instead of going back to the front.
+// set at that hole. The fit's solid stays there instead of going back to the front; and the
+// stopping test, which leaves the front near spanned holes to the fit, does not wait for it.
 TEST(RandomReconstruction, AFrontThatCreptIntoAHoleLeavesNoHandle) {
   const TestShape shape = make_test_shape("two-spheres");
   SamplingVariant v;
   v.holes = 4;
   const Outcome o = run(shape, sample_test_shape(shape, 20000, v, 4));
-  EXPECT_NE(o.r.status, ReconstructionStatus::cancelled);
+  EXPECT_EQ(o.r.status, ReconstructionStatus::converged);
   EXPECT_TRUE(o.topology.watertight);
   EXPECT_EQ(o.genus, (std::vector<int>{0, 0}));
 }
