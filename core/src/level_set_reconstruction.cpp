@@ -569,16 +569,20 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   // (measured: the cup with the 10x density gradient and the holey double torus got one each).
   // Far from the data (past the largest empty disc, as above) the front is held by curvature
   // alone and a guess: there the fit may join too (measured: a coarse front spanned a torus's
-  // hole). A void the merge cut off the outside bounds no data and is filled (measured: with the
-  // fit's solid kept over every hole the front had crept through, one 2 spacings wide inside the
-  // holey limb). Bubbles and specks narrower than a spacing go last (measured: a one-vertex void
-  // in the noisy, holey limb and one in the cup's wall).
+  // hole). Not over a spanned hole, where the rims' discs hold the front where the samples say
+  // the surface goes (measured: the fit opened a handle across a hole on the noisy, holey
+  // limb's thin part, seed 2, where the front had none). A void the merge cut off the outside
+  // bounds no data and is filled (measured: with the fit's solid kept over every hole the front
+  // had crept through, one 2 spacings wide inside the holey limb). Bubbles and specks narrower
+  // than a spacing go last (measured: a one-vertex void in the noisy, holey limb and one in the
+  // cup's wall).
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
   cap_at_walls<D>(mesh, values);
   std::vector<char> may_join(values.size());
   for (std::size_t v = 0; v < values.size(); ++v) {
-    may_join[v] = distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
+    const bool hole = !over_hole.empty() && over_hole[v];
+    may_join[v] = !hole && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
   }
   merge_without_joins<D>(mesh, front, values, may_join);
   fill_cut_off_voids<D>(mesh, front, values);

@@ -113,6 +113,26 @@ double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std
   return sum / k;
 }
 
+// The least mean |cos| between a rim point's normal and its neighbours': kRimSmoothness, less
+// what noise sigma scatters PCA normals by. A normal fitted to k points over a disc of radius
+// r tilts by about sigma / (r sqrt(k) / 2) per axis, so two of them differ by E[theta^2] ~
+// 16 sigma^2 / (k r^2) and 1 - |cos| by half that: 0.19 (sigma / s)^2 with r^2 ~ (16 / 6) s^2.
+// Measured at 20k points (neighbouring fits overlap, rims see half a disc): median 0.25-0.31
+// (sigma / s)^2 on the noisy sphere, torus and triple torus, 90th percentile about twice that;
+// the allowance is that percentile. Without it the noise hid 41 of 119 rim candidates of the
+// noisy holey triple torus (seed 4) and the flood entered its tube. sigma / s is the cloud's
+// median: a crease inflates the local PCA "noise" as much as noise does (0.34-0.40 at the
+// creases of the clean double and triple tori, where the local ratio let 2 crease points in
+// as rims, and more steps followed), and scanner noise is a property of the scan.
+template <int D>
+double rim_smoothness(const LocalSampling<D>& sampling) {
+  std::vector<double> ratio2(sampling.noise.size());
+  for (std::size_t i = 0; i < ratio2.size(); ++i) {
+    ratio2[i] = std::pow(sampling.noise[i] / std::max(sampling.spacing[i], 1e-300), 2);
+  }
+  return LocalSampling<D>::kRimSmoothness - 0.6 * median(std::move(ratio2));
+}
+
 // Of the open points (kRimGap free among their k nearest: a superset, as fewer neighbours
 // leave wider gaps), those whose kRimNeighbours nearest also leave kRimGap free, whose
 // neighbours' normals agree, and which have D - 1 more such points among their k nearest.
@@ -124,9 +144,11 @@ double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std
 // the front off and took 26 steps instead of 14; their discs, bent to 16-point quadrics,
 // extrapolate 20 spacings).
 template <int D>
-std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::vector<char>& open, const Points<D>& normals,
-                                 const LargeVector<Index>& neighbours, int k, int threads) {
+std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::vector<char>& open,
+                                 const LocalSampling<D>& sampling, const LargeVector<Index>& neighbours, int k,
+                                 int threads) {
   const Points<D>& p = data.points();
+  const Points<D>& normals = sampling.normals;
   std::vector<char> wide(p.size(), 0);
   Points<D> candidates;
   std::vector<std::size_t> which;
@@ -160,8 +182,9 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
     if (found[std::size_t(c)] >= 0) wide[which[std::size_t(c)]] = 0;
   }
   std::vector<char> rim(p.size(), 0);
+  const double smoothness = rim_smoothness(sampling);
   for (std::size_t i : which) {
-    if (!wide[i] || mean_agreement(normals, &neighbours[i * std::size_t(k)], k, i) < LocalSampling<D>::kRimSmoothness) continue;
+    if (!wide[i] || mean_agreement(normals, &neighbours[i * std::size_t(k)], k, i) < smoothness) continue;
     int others = 0;
     for (int j = 0; j < k; ++j) {
       const Index other = neighbours[i * std::size_t(k) + std::size_t(j)];
@@ -275,7 +298,9 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
     pca(p, nearest, k, noise[i], s.normals[i]);
     if (rims) open[i] = largest_angular_gap(p, nearest, k, std::size_t(i), s.normals[i]) > LocalSampling<D>::kRimGap;
   }
-  if (rims) s.rim = confirmed_rims(data, open, s.normals, neighbours, k, t);
+  s.spacing = neighbourhood_median(spacing, neighbours, k, t);
+  s.noise = neighbourhood_median(noise, neighbours, k, t);
+  if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t);
   // 48 bytes a point in 3D: not even allocated for a closed cloud without rims.
   if (height_fields == HeightFieldsAt::all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
     s.height_fields.resize(p.size());
@@ -286,8 +311,6 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
       }
     }
   }
-  s.spacing = neighbourhood_median(spacing, neighbours, k, t);
-  s.noise = neighbourhood_median(noise, neighbours, k, t);
   return s;
 }
 

@@ -60,7 +60,9 @@ struct LocalSampling {
   static constexpr double kRimGap = 2.09;  ///< radians (120 degrees); pi on a straight rim
   static constexpr int kRimNeighbours = 32;
   /// mean |cos| of the angles between a rim point's normal and its neighbours' at least
-  /// (18 degrees on average): 0.985-1 on the holes' rims of a clean torus, 0.91-1 noisy
+  /// (18 degrees on average): 0.985-1 on the holes' rims of a clean torus, 0.91-1 noisy; less
+  /// an allowance for the noise's scatter of the normals, 0.6 (sigma / s)^2 with the cloud's
+  /// median sigma / s (local_sampling.cpp)
   static constexpr double kRimSmoothness = 0.95;
   static constexpr int kNeighbours = 16;  ///< neighbourhood size, the point itself included
   static constexpr int kSpacingRank = D == 2 ? 2 : 6;  ///< k of the spacing rule
