@@ -493,6 +493,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   // kUnsupported: past the largest empty disc (below); kHandover: where unsupported solid starts
   // going to the front.
   constexpr double band_factor = 3.0, kUnsupported = 1.5, kHandover = 1.0;
+  const auto is_over_hole = [&](std::size_t v) { return !over_hole.empty() && over_hole[v]; };
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
   std::vector<Index> band_vertices;
@@ -537,7 +538,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     // fit's tangent planes (measured: without that test, fins 2.8 spacings past the 5k bunny's
     // ear tips).
     const bool adds_solid = values[v] < 0.0 && u[v] > 0.0;
-    const bool hole = !over_hole.empty() && over_hole[std::size_t(v)];
+    const bool hole = is_over_hole(std::size_t(v));
     if (hole && adds_solid && distance[v] - u[v] > trust_factor * scale[v]) continue;
     // Solid the fit adds outside the front must be near the data: the surface between random
     // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
@@ -581,8 +582,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   cap_at_walls<D>(mesh, values);
   std::vector<char> may_join(values.size());
   for (std::size_t v = 0; v < values.size(); ++v) {
-    const bool hole = !over_hole.empty() && over_hole[v];
-    may_join[v] = !hole && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
+    may_join[v] = !is_over_hole(v) && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
   }
   merge_without_joins<D>(mesh, front, values, may_join);
   fill_cut_off_voids<D>(mesh, front, values);
