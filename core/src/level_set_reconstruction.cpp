@@ -13,6 +13,7 @@
 #include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/point_validation.h"
 #include "lsrecon/core/renormalization.h"
+#include "lsrecon/core/sheet_gaps.h"
 #include "lsrecon/core/stall_detection.h"
 #include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/core/unit_box_transform.h"
@@ -489,7 +490,8 @@ template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
-                const std::vector<char>& near_opening, bool volume, int threads) {
+                const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
+                bool volume, int threads) {
   // kUnsupported: past the largest empty disc (below); kHandover: where unsupported solid starts
   // going to the front.
   constexpr double band_factor = 3.0, kUnsupported = 1.5, kHandover = 1.0;
@@ -519,9 +521,26 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   };
   // The settled front lies within gap_factor spacings of the data: a fit that disagrees with its
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
-  for (std::size_t k = 0; k < band.size(); ++k) {
+  // But in a gap between two facing sheets (sheet_gaps.h) the pinned cells of both sides hold a
+  // bridge of front as deep as half the gap, which the fit cuts at any depth (measured: a bridge
+  // 2.09 spacings deep kept the noisy, holey two spheres of seed 3 in one piece).
+  const auto disputed = [&](std::size_t k) {
     const Index v = band_vertices[k];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v];
+    return u[v] < 0.0 && f[k] >= 0.0 && std::abs(u[v]) >= trust_factor * scale[v];
+  };
+  Points<D> cut_queries;
+  std::vector<double> cut_distance, cut_beyond;
+  for (std::size_t k = 0; k < band.size(); ++k) {
+    if (!disputed(k)) continue;
+    cut_queries.push_back(band[k]);
+    cut_distance.push_back(distance[band_vertices[k]]);
+    cut_beyond.push_back(scale[band_vertices[k]]);
+  }
+  const std::vector<char> in_gap = between_facing_sheets(data, normals, cut_queries, cut_distance, cut_beyond, threads);
+  for (std::size_t k = 0, c = 0; k < band.size(); ++k) {
+    const Index v = band_vertices[k];
+    const bool cuts_bridge = disputed(k) && in_gap[c++];
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] || cuts_bridge;
     values[v] = trusted ? f[k] : u[v];
     if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] = trusted ? 1.0 : 0.0;
     auto hand_over = [&](double start) {
@@ -910,8 +929,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
-    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, near_opening, o.volume_mesh,
-               o.threads);
+    attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, near_opening, data, normals,
+               o.volume_mesh, o.threads);
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
