@@ -524,23 +524,23 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   // But in a gap between two facing sheets (sheet_gaps.h) the pinned cells of both sides hold a
   // bridge of front as deep as half the gap, which the fit cuts at any depth (measured: a bridge
   // 2.09 spacings deep kept the noisy, holey two spheres of seed 3 in one piece).
-  const auto disputed = [&](std::size_t k) {
-    const Index v = band_vertices[k];
-    return u[v] < 0.0 && f[k] >= 0.0 && std::abs(u[v]) >= trust_factor * scale[v];
-  };
-  Points<D> cut_queries;
-  std::vector<double> cut_distance, cut_beyond;
+  std::vector<std::size_t> disputed;  // band slots where the fit says outside, deep in the front
+  Points<D> queries;
+  std::vector<double> query_distance, query_scale;
   for (std::size_t k = 0; k < band.size(); ++k) {
-    if (!disputed(k)) continue;
-    cut_queries.push_back(band[k]);
-    cut_distance.push_back(distance[band_vertices[k]]);
-    cut_beyond.push_back(scale[band_vertices[k]]);
-  }
-  const std::vector<char> in_gap = between_facing_sheets(data, normals, cut_queries, cut_distance, cut_beyond, threads);
-  for (std::size_t k = 0, c = 0; k < band.size(); ++k) {
     const Index v = band_vertices[k];
-    const bool cuts_bridge = disputed(k) && in_gap[c++];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] || cuts_bridge;
+    if (!(u[v] < 0.0 && f[k] >= 0.0 && std::abs(u[v]) >= trust_factor * scale[v])) continue;
+    disputed.push_back(k);
+    queries.push_back(band[k]);
+    query_distance.push_back(distance[v]);
+    query_scale.push_back(scale[v]);
+  }
+  const std::vector<char> in_gap = between_facing_sheets(data, normals, queries, query_distance, query_scale, threads);
+  std::vector<char> cuts_bridge(band.size(), 0);
+  for (std::size_t i = 0; i < disputed.size(); ++i) cuts_bridge[disputed[i]] = in_gap[i];
+  for (std::size_t k = 0; k < band.size(); ++k) {
+    const Index v = band_vertices[k];
+    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] || cuts_bridge[k];
     values[v] = trusted ? f[k] : u[v];
     if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] = trusted ? 1.0 : 0.0;
     auto hand_over = [&](double start) {
