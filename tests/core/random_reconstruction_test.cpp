@@ -29,6 +29,14 @@ struct Outcome {
   std::vector<int> genus;  // sorted
 };
 
+// The corpus's noisy holey variant: noise 0.25% and 4 holes of radius 4% of the diagonal.
+SamplingVariant noisy_and_holey() {
+  SamplingVariant v;
+  v.holes = 4;
+  v.noise = 0.0025;
+  return v;
+}
+
 Outcome run(const TestShape& shape, const SampledShape& sample, const ReconstructionOptions& options = {}) {
   Outcome o;
   o.r = reconstruct<3>(sample.points, options);
@@ -293,9 +301,7 @@ TEST(RandomReconstruction, AThinPartOpenedAtItsEndIsClosedNotEntered) {
 // input normals mostly inward). The threshold allows for the cloud's noise (local_sampling.cpp).
 TEST(RandomReconstruction, NoiseDoesNotHideTheRimsOfOverlappingHoles) {
   const TestShape shape = make_test_shape("triple-torus");
-  SamplingVariant v;
-  v.holes = 4;
-  v.noise = 0.0025;
+  const SamplingVariant v = noisy_and_holey();
   const SampledShape sample = sample_test_shape(shape, 20000, v, 4);
   const Outcome o = run(shape, sample);
   EXPECT_TRUE(o.topology.watertight);
@@ -311,10 +317,7 @@ TEST(RandomReconstruction, NoiseDoesNotHideTheRimsOfOverlappingHoles) {
 // are not.
 TEST(RandomReconstruction, TheFitOpensNoHandleOverAHole) {
   const TestShape shape = make_test_shape("limb");
-  SamplingVariant v;
-  v.holes = 4;
-  v.noise = 0.0025;
-  const Outcome o = run(shape, sample_test_shape(shape, 20000, v, 2));
+  const Outcome o = run(shape, sample_test_shape(shape, 20000, noisy_and_holey(), 2));
   EXPECT_TRUE(o.topology.watertight);
   EXPECT_EQ(o.genus, std::vector<int>{0});
 }
@@ -326,10 +329,7 @@ TEST(RandomReconstruction, TheFitOpensNoHandleOverAHole) {
 // (sheet_gaps.h).
 TEST(RandomReconstruction, TheFitCutsADeepBridgeBetweenTwoSheets) {
   const TestShape shape = make_test_shape("two-spheres");
-  SamplingVariant v;
-  v.holes = 4;
-  v.noise = 0.0025;
-  const Outcome o = run(shape, sample_test_shape(shape, 20000, v, 3));
+  const Outcome o = run(shape, sample_test_shape(shape, 20000, noisy_and_holey(), 3));
   EXPECT_TRUE(o.topology.watertight);
   EXPECT_EQ(o.genus, (std::vector<int>{0, 0}));
 }
