@@ -2,6 +2,8 @@
 /// @file sheet_gaps.cpp
 #include "lsrecon/core/sheet_gaps.h"
 
+#include <algorithm>
+
 #include <omp.h>
 
 namespace lsr {
@@ -11,9 +13,10 @@ std::vector<char> between_facing_sheets(const NearestPointIndex<D>& data, const 
                                         const Points<D>& queries, const std::vector<double>& distance,
                                         const std::vector<double>& beyond, int threads) {
   constexpr double kReach = 1.5, kOpposite = -0.5, kFacing = 0.8;
-  // The few points nearest to q: those within 1.5 times its distance, on random samples of
+  // The few points nearest to q hold those within 1.5 times its distance: on random samples of
   // two sheets about a dozen.
-  const int k = std::min<int>(16, int(data.points().size()));
+  constexpr int kNear = 16;
+  const int k = std::min<int>(kNear, int(data.points().size()));
   std::vector<char> between(queries.size(), 0);
   if (queries.empty() || k < 2) return between;
   LargeVector<Index> nearest;
@@ -23,7 +26,7 @@ std::vector<char> between_facing_sheets(const NearestPointIndex<D>& data, const 
   for (std::ptrdiff_t q = 0; q < std::ptrdiff_t(queries.size()); ++q) {
     if (!(distance[q] > beyond[q])) continue;
     // The unit directions q -> p of the near points that q faces.
-    Vec<D> towards[16];
+    Vec<D> towards[kNear];
     int facing = 0;
     for (int j = 0; j < k; ++j) {
       const Index i = nearest[std::size_t(q) * k + j];

@@ -11,7 +11,7 @@
 
 namespace lsr {
 
-/// @brief True for each query q farther than its `beyond` from every data point that has two
+/// @brief True for each query q that lies farther than its `beyond` from the data and has two
 /// data points p, p' within 1.5 times its distance to the data such that
 ///  * they lie on opposite sides of q: the directions q -> p and q -> p' more than 120 degrees
 ///    apart (the nearest points of two facing sheets lie along the gap's normal, on both sides);
