@@ -13,6 +13,7 @@
 #include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/point_validation.h"
 #include "lsrecon/core/renormalization.h"
+#include "lsrecon/core/residual_noise.h"
 #include "lsrecon/core/sheet_gaps.h"
 #include "lsrecon/core/stall_detection.h"
 #include "lsrecon/core/tangent_discs.h"
@@ -928,7 +929,9 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit(data, normals, point_scale, sampling.noise, o.threads);
+    // The fits widen with the noise, not with the bend that PCA's thickness also counts.
+    const std::vector<double> fit_noise = residual_noise(data, normals, QuadricImplicit<D>::kFitNeighbours, o.threads);
+    const QuadricImplicit<D> fit(data, normals, point_scale, fit_noise, o.threads);
     attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, near_opening, data, normals,
                o.volume_mesh, o.threads);
     clock.end("fit");

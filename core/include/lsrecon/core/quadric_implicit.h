@@ -43,7 +43,8 @@ class QuadricImplicit {
   /// @param data the points (#N) and their kd-tree
   /// @param normals #N unit outward normals
   /// @param spacing #N local sampling spacing: the width of each fit's blending weight
-  /// @param noise #N local noise deviation (empty: clean)
+  /// @param noise #N local noise deviation (empty: clean), not raised by curvature
+  /// (residual_noise.h): a curved clean part is fitted as clean
   /// @param threads 0 for all cores
   QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals, std::vector<double> spacing,
                   const std::vector<double>& noise = {}, int threads = 0);
