@@ -929,9 +929,15 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!best_is_distance) renormalize(mesh, neighbours, best, band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    // The fits widen with the noise, not with the bend that PCA's thickness also counts.
-    const std::vector<double> fit_noise = residual_noise(data, normals, QuadricImplicit<D>::kFitNeighbours, o.threads);
-    const QuadricImplicit<D> fit(data, normals, point_scale, fit_noise, o.threads);
+    // The fits widen with the noise, not with the bend that PCA's thickness also counts; both
+    // read the same neighbours (freed before the blends).
+    const QuadricImplicit<D> fit = [&] {
+      const int k = std::min<int>(QuadricImplicit<D>::kFitNeighbours, int(data.points().size()));
+      LargeVector<Index> nearest;
+      data.query_k(data.points(), k, nearest, o.threads);
+      const std::vector<double> fit_noise = residual_noise(data.points(), normals, nearest, k, o.threads);
+      return QuadricImplicit<D>(data, normals, point_scale, fit_noise, o.threads, &nearest);
+    }();
     attach_fit(r, mesh, neighbours, fit, best, scale, distance, o.gap_factor, over_hole, near_opening, data, normals,
                o.volume_mesh, o.threads);
     clock.end("fit");

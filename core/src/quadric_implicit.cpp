@@ -57,7 +57,8 @@ Eigen::Matrix<double, D == 2 ? 3 : 6, 1> monomials(const Eigen::Matrix<double, D
 
 template <int D>
 QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals,
-                                    std::vector<double> spacing, const std::vector<double>& noise, int threads)
+                                    std::vector<double> spacing, const std::vector<double>& noise, int threads,
+                                    const LargeVector<Index>* given)
     : data_(data), spacing_(std::move(spacing)), blend_width2_(spacing_.size()), fits_(data.points().size()) {
   // Read by every blend, twelve times per query: computed once.
   for (std::size_t i = 0; i < spacing_.size(); ++i) blend_width2_[i] = std::pow(std::max(spacing_[i], 1e-12), 2);
@@ -79,8 +80,9 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
   // The wider neighbourhoods in classes of sizes growing by 5/4, each class queried at its
   // largest size: one query for the widest point alone would make every noisy point search as
   // far (measured: 101k points of the 200k bunny searched for 120 neighbours, not 31-45).
-  LargeVector<Index> nearest;
-  data.query_k(p, k_clean, nearest, threads);
+  LargeVector<Index> queried;
+  if (!given) data.query_k(p, k_clean, queried, threads);
+  const LargeVector<Index>& nearest = given ? *given : queried;
   std::vector<int> class_of(p.size(), -1);
   std::vector<int> class_k;
   for (int k = k_clean; k < k_max;) {

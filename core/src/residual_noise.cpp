@@ -49,13 +49,18 @@ double quadric_residual(const Points<D>& p, const Points<D>& normals, const Inde
 
 template <int D>
 std::vector<double> residual_noise(const NearestPointIndex<D>& data, const Points<D>& normals, int k, int threads) {
-  const Points<D>& p = data.points();
+  k = std::min<int>(k, int(data.points().size()));
+  LargeVector<Index> nearest;
+  if (k > 0) data.query_k(data.points(), k, nearest, threads);
+  return residual_noise(data.points(), normals, nearest, k, threads);
+}
+
+template <int D>
+std::vector<double> residual_noise(const Points<D>& p, const Points<D>& normals, const LargeVector<Index>& nearest,
+                                   int k, int threads) {
   const long n = long(p.size());
-  k = std::min<int>(k, int(p.size()));
   std::vector<double> noise(p.size(), 0.0);
   if (k < HeightField<D>::kTerms + 3) return noise;
-  LargeVector<Index> nearest;
-  data.query_k(p, k, nearest, threads);
   const int t = threads > 0 ? threads : omp_get_max_threads();
   std::vector<double> raw(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
@@ -79,5 +84,7 @@ std::vector<double> residual_noise(const NearestPointIndex<D>& data, const Point
 
 template std::vector<double> residual_noise<2>(const NearestPointIndex<2>&, const Points<2>&, int, int);
 template std::vector<double> residual_noise<3>(const NearestPointIndex<3>&, const Points<3>&, int, int);
+template std::vector<double> residual_noise<2>(const Points<2>&, const Points<2>&, const LargeVector<Index>&, int, int);
+template std::vector<double> residual_noise<3>(const Points<3>&, const Points<3>&, const LargeVector<Index>&, int, int);
 
 }  // namespace lsr

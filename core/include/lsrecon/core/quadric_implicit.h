@@ -46,8 +46,11 @@ class QuadricImplicit {
   /// @param noise #N local noise deviation (empty: clean), not raised by curvature
   /// (residual_noise.h): a curved clean part is fitted as clean
   /// @param threads 0 for all cores
+  /// @param nearest the min(kFitNeighbours, #N) nearest of each point, as query_k gives them,
+  /// when the caller has them already (residual_noise uses the same); null: queried here
   QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals, std::vector<double> spacing,
-                  const std::vector<double>& noise = {}, int threads = 0);
+                  const std::vector<double>& noise = {}, int threads = 0,
+                  const LargeVector<Index>* nearest = nullptr);
 
   /// @brief F at each query (#Q) and, if asked, the unit outward normal of the blended fits.
   void evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal = nullptr,

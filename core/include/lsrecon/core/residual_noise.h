@@ -29,4 +29,10 @@ namespace lsr {
 template <int D>
 std::vector<double> residual_noise(const NearestPointIndex<D>& data, const Points<D>& normals, int k, int threads = 0);
 
+/// @brief The same from the k nearest of each point, as NearestPointIndex::query_k gives them
+/// (#N x k, the point itself first), when the caller has them already.
+template <int D>
+std::vector<double> residual_noise(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& nearest,
+                                   int k, int threads = 0);
+
 }  // namespace lsr
