@@ -18,6 +18,7 @@
 #include "lsrecon/core/stall_detection.h"
 #include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/core/unit_box_transform.h"
+#include "lsrecon/core/unsupported_parts.h"
 #include "lsrecon/core/z_order.h"
 
 #include <Eigen/Eigenvalues>
@@ -427,7 +428,9 @@ std::vector<double> half_longest_edges(const SimplexMesh<D>& mesh, const VertexN
 
 // The output surface of `values`, closed: a front or fit that reaches the box (a handful of
 // points spanning the box, a fit extrapolated past the data) is capped just inside the walls.
-// The capped values are left in `values`: the volume split cuts along the same level set.
+// Parts that no data point is nearest to go (unsupported_parts.h; a void inside such a part
+// becomes one in turn, hence the loop). The values are left as extracted in `values`: the
+// volume split cuts along the same level set.
 template <int D, class Values>
 void cap_at_walls(const SimplexMesh<D>& mesh, Values& values) {
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
@@ -436,9 +439,14 @@ void cap_at_walls(const SimplexMesh<D>& mesh, Values& values) {
 }
 
 template <int D>
-LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, std::vector<double>& values, int threads) {
+LevelSetMesh<D> extract_closed_surface(const SimplexMesh<D>& mesh, const Points<D>& points, std::vector<double>& values,
+                                       int threads) {
   cap_at_walls<D>(mesh, values);
-  return extract_zero_level_set(mesh, values, kOutputEdgeMargin, threads);
+  LevelSetMesh<D> surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin, threads);
+  while (drop_unsupported_parts(mesh, surface, points, values, threads) > 0) {
+    surface = extract_zero_level_set(mesh, values, kOutputEdgeMargin, threads);
+  }
+  return surface;
 }
 
 // The inside and outside meshes, sharing the output surface, when asked for.
@@ -456,10 +464,10 @@ void attach_volume(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const
 // The front's own surface (no fit): the level `level` of u, normals from grad u.
 template <int D>
 void attach_front(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const P1Operators<D>& ops,
-                  const Eigen::VectorXd& u, double level, bool volume, int threads) {
+                  const Eigen::VectorXd& u, double level, const Points<D>& points, bool volume, int threads) {
   std::vector<double> values(u.data(), u.data() + u.size());
   for (double& v : values) v -= level;
-  r.surface = extract_closed_surface(mesh, values, threads);
+  r.surface = extract_closed_surface(mesh, points, values, threads);
   attach_volume(r, mesh, values, volume);
   const Eigen::VectorXd g = ops.gradient_times(u);
   r.normals.resize(r.surface.vertices.size());
@@ -607,7 +615,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
   merge_without_joins<D>(mesh, front, values, may_join);
   fill_cut_off_voids<D>(mesh, front, values);
   absorb_small_parts<D>(mesh, neighbours, scale, values);
-  r.surface = extract_closed_surface(mesh, values, threads);
+  r.surface = extract_closed_surface(mesh, data.points(), values, threads);
   const Points<D> extracted = fit_share.empty() ? Points<D>() : r.surface.vertices;
   r.normals = fit.project(r.surface.vertices, threads);
   for (std::size_t i = 0; i < extracted.size(); ++i) {
@@ -943,7 +951,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     clock.end("fit");
   } else {
     r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, ops, best, r.output_level * box.scale(), o.volume_mesh, o.threads);
+    attach_front(r, mesh, ops, best, r.output_level * box.scale(), data.points(), o.volume_mesh, o.threads);
     clock.end("extract");
   }
   for (auto& x : r.surface.vertices) x = box.from_unit(x);
