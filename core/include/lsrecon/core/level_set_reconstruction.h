@@ -61,9 +61,11 @@ struct ReconstructionOptions {
   double max_resolution = 0.0;
   /// A point whose nearest distinct neighbour is farther than outlier_factor local spacings
   /// (the median spacing of its neighbourhood) is an isolated outlier and left out; 0 keeps
-  /// every point. A scanner outlier left in becomes a small closed bubble of its own (10
+  /// every point. A scanner outlier left in is wrapped in a small closed bubble of its own (10
   /// outliers among 20k torus points gave 11 components; with a factor of 4, one outlier
-  /// 3-4 spacings off the surface still pinched off; measured). On the test corpus (9 shapes;
+  /// 3-4 spacings off the surface still pinched off; measured), which the output then drops
+  /// as a part fewer than D + 1 samples support (unsupported_parts.h); its time and memory
+  /// are spent, and a cluster of D + 1 outliers stays. On the test corpus (9 shapes;
   /// clean, noisy, 10x density, holes; 2k-200k points) the largest ratio of a genuine point
   /// is 2.5.
   double outlier_factor = 3.0;
