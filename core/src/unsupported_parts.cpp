@@ -5,6 +5,7 @@
 #include "lsrecon/core/nearest_point_index.h"
 #include "lsrecon/core/outside_flood_fill.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace lsr {
