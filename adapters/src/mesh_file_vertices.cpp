@@ -35,7 +35,7 @@ Vec<3> position(const std::vector<std::string>& w, std::size_t first, const std:
     const std::string& t = w[first + std::size_t(k)];
     char* end = nullptr;
     p[k] = std::strtod(t.c_str(), &end);
-    if (end == t.c_str() || *end != '\0') throw Error(where + ": '" + t + "' is not a number", kHint);
+    if (t.empty() || end != t.c_str() + t.size()) throw Error(where + ": '" + printable(t) + "' is not a number", kHint);
   }
   return p;
 }
@@ -120,9 +120,17 @@ Points<3> read_stl(std::ifstream& in, const std::string& path) {
   in.seekg(0);
   Points<3> corners;
   std::string line;
+  bool in_facet = false;
   for (long number = 1; std::getline(in, line); ++number) {
     const std::vector<std::string> w = words(line);
-    if (!w.empty() && w[0] == "vertex") corners.push_back(position(w, 1, path + ":" + std::to_string(number)));
+    if (w.empty()) continue;
+    if (w[0] == "vertex") corners.push_back(position(w, 1, path + ":" + std::to_string(number)));
+    if (w[0] == "facet") in_facet = true;
+    if (w[0] == "endfacet") in_facet = false;
+  }
+  // A file cut mid-facet is a failed transfer, not a smaller mesh.
+  if (in_facet || corners.size() % 3 != 0) {
+    throw Error(path + ": the text STL ends inside a facet (" + std::to_string(corners.size()) + " vertices)", kHint);
   }
   return weld(corners);
 }

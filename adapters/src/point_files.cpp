@@ -2,14 +2,12 @@
 /// @file point_files.cpp
 #include "lsrecon/adapters/point_files.h"
 
+#include "binary_scalars.h"
+#include "point_file_readers.h"
+
 #include "lsrecon/adapters/file_header_checks.h"
 #include "lsrecon/adapters/mesh_file_vertices.h"
-#include "lsrecon/adapters/pcl_points.h"
 #include "lsrecon/core/errors.h"
-
-#include <pcl/io/pcd_io.h>
-#include <pcl/io/ply_io.h>
-#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cctype>
@@ -48,12 +46,6 @@ const std::vector<Format>& formats() {
   return table;
 }
 
-bool is_number(const std::string& token, double& value) {
-  char* end = nullptr;
-  value = std::strtod(token.c_str(), &end);
-  return end != token.c_str() && *end == '\0';
-}
-
 // Whitespace-separated fields; a line that is one comma- or semicolon-separated field is CSV.
 std::vector<std::string> split_fields(const std::string& line) {
   std::vector<std::string> fields;
@@ -86,12 +78,17 @@ PointFile read_text(const std::string& path) {
     first = false;
     if (header) continue;
     for (; n < 3 && n < int(fields.size()); ++n) {
-      if (!is_number(fields[n], v[n])) {
-        throw Error(path + ":" + std::to_string(number) + ": '" + fields[n] + "' is not a number", format);
+      if (!detail::parse_number(fields[n], v[n])) {
+        throw Error(path + ":" + std::to_string(number) + ": '" + printable(fields[n]) + "' is not a number", format);
       }
     }
     if (n < 2) throw Error(path + ":" + std::to_string(number) + ": expected 2 or 3 numbers", format);
     if (columns == 0) columns = n;
+    // 2D and 3D lines mixed: a z column lost on some lines is data lost, not a plane.
+    if (n != columns) {
+      throw Error(path + ":" + std::to_string(number) + ": " + std::to_string(n) + " coordinates where the first point has " +
+                      std::to_string(columns), format);
+    }
     const Vec<3> p(v[0], v[1], v[2]);
     if (p.allFinite()) {
       out.points.push_back(p);
@@ -104,42 +101,6 @@ PointFile read_text(const std::string& path) {
     throw Error(path + " holds no points: it is empty or only comments and a header line", format);
   }
   out.planar_text = columns == 2;
-  return out;
-}
-
-// PCL 1.13's PCDReader::read crashes on a file whose header it has rejected (seen on a text
-// file without a header): check the header first.
-bool plausible_pcd(const std::string& path) {
-  pcl::PCDReader reader;
-  pcl::PCLPointCloud2 header;
-  Eigen::Vector4f origin;
-  Eigen::Quaternionf orientation;
-  int version = 0, data_type = 0;
-  unsigned int data_index = 0;
-  if (reader.readHeader(path, header, origin, orientation, version, data_type, data_index) < 0) return false;
-  if (std::size_t(header.width) * header.height == 0) return false;
-  int xyz = 0;
-  for (const auto& f : header.fields) xyz += (f.name == "x" || f.name == "y" || f.name == "z") ? 1 : 0;
-  return xyz == 3;
-}
-
-template <class Load>
-PointFile read_pcl(const std::string& path, Load load) {
-  pcl::PointCloud<pcl::PointXYZ> cloud;
-  if (!std::ifstream(path)) throw Error("cannot open " + path, "check the path and the file's permissions");
-  const bool pcd = file_extension(path) == "pcd";
-  const char* const hint = "the file is corrupt or not a PCD / PLY point cloud";
-  try {
-    if ((pcd && !plausible_pcd(path)) || load(path, cloud) < 0) throw Error("cannot read the point cloud in " + path, hint);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {  // PCL's parsers throw what they meet (stoi, lexical_cast)
-    throw Error("cannot read the point cloud in " + path + " (" + e.what() + ")", hint);
-  }
-  ConvertedPoints c = points_from_cloud(cloud);
-  PointFile out;
-  out.points = std::move(c.points);
-  out.skipped = c.skipped_non_finite;
   return out;
 }
 
@@ -166,18 +127,15 @@ std::string extensions(FileRole role) {
 }
 
 PointFile read_point_file(const std::string& path) {
-  check_declared_size(path);
+  require_regular_file(path);
   const std::string ext = file_extension(path);
   if (!has_role(ext, FileRole::point_input)) {
-    throw Error("unknown input format '" + ext + "' (" + path + ")",
+    throw Error("unknown input format '" + printable(ext) + "' (" + path + ")",
                 "use " + extensions(FileRole::point_input) + " (or an image for 2D: " + extensions(FileRole::image_input) + ")");
   }
-  if (ext == "pcd") {
-    return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPCDFile(p, c); });
-  }
-  if (ext == "ply") {
-    return read_pcl(path, [](const std::string& p, pcl::PointCloud<pcl::PointXYZ>& c) { return pcl::io::loadPLYFile(p, c); });
-  }
+  if (ext == "pcd") return detail::read_pcd_points(path);
+  if (ext == "ply") return detail::read_ply_points(path);
+  check_declared_size(path);
   if (ext == "obj" || ext == "off" || ext == "stl") {
     PointFile out;
     out.points = read_mesh_file_vertices(path);

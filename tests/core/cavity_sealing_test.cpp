@@ -80,9 +80,13 @@ TEST(CavitySealing, GivesBackARingEnteredThroughANarrowOpening) {
   for (std::size_t v = 0; v < f.mesh.vertices.size(); ++v) {
     const double r = (f.mesh.vertices[v] - kCentre).norm();
     // Inside, short of the opening's mouth (within an opening's width of it), nothing is left.
-    if (r < kRing - 0.1) EXPECT_FALSE(f.reached[v]) << f.mesh.vertices[v].transpose();
+    if (r < kRing - 0.1) {
+      EXPECT_FALSE(f.reached[v]) << f.mesh.vertices[v].transpose();
+    }
     // The outside stays: everything a gap beyond the ring is reached.
-    if (r > kRing + kGap + 0.01) EXPECT_TRUE(f.reached[v]) << f.mesh.vertices[v].transpose();
+    if (r > kRing + kGap + 0.01) {
+      EXPECT_TRUE(f.reached[v]) << f.mesh.vertices[v].transpose();
+    }
   }
 }
 

@@ -77,8 +77,12 @@ void two_balls_keep_the_one_with_data() {
   EXPECT_EQ(parts<D>(grid.mesh, u, true), 1u);
   for (std::size_t v = 0; v < u.size(); ++v) {
     const Vec<D>& x = grid.mesh.vertices[v];
-    if (ball<D>(x, b, 0.1) < 0.0) EXPECT_GE(u[v], 0.0);  // b's solid is gone
-    if (ball<D>(x, a, 0.15) < 0.0) EXPECT_LT(u[v], 0.0);  // a's is not
+    if (ball<D>(x, b, 0.1) < 0.0) {
+      EXPECT_GE(u[v], 0.0);  // b's solid is gone
+    }
+    if (ball<D>(x, a, 0.15) < 0.0) {
+      EXPECT_LT(u[v], 0.0);  // a's is not
+    }
   }
   // With samples on both, nothing changes.
   Points<D> on_both = on_a;

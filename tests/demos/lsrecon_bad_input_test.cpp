@@ -81,6 +81,12 @@ std::vector<Row> bad_points() {
       {"junk.pcd", [](std::ofstream& f) { f << "this is not a point cloud\n"; }, "no PCD header"},
       {"junk.ply", [](std::ofstream& f) { f << "ply\nformat nonsense\n"; }, "no PLY header"},
       {"in.unknown", [](std::ofstream& f) { f << "1 2 3\n"; }, "unknown input format"},
+      {"mixed.xyz", [](std::ofstream& f) { lines(f, {"0 0 0", "1 0 0", "1 0"}); }, "mixed.xyz:3: 2 coordinates where the first point has 3"},
+      {"cut.stl", [](std::ofstream& f) { lines(f, {"solid " + std::string(80, 'x'), "facet normal 0 0 1", "outer loop", "vertex 0 0 0", "vertex 1 0 0"}); },
+       "ends inside a facet"},
+      // Bytes from the file reach the message as text: no NUL to cut it, no escape for the terminal.
+      {"escape.xyz", [](std::ofstream& f) { lines(f, {"1 2 3", "\x1b]0;title\a 5 6"}); }, "'\\x1b]0;title\\x07' is not a number"},
+      {"nul.xyz", [](std::ofstream& f) { f << "1 2 3\n4" << '\0' << "x 5 6\n"; }, "'4\\x00x' is not a number ["},
   };
 }
 
@@ -116,6 +122,9 @@ TEST_F(BadInput, EachPointFileRowIsRefusedWithItsMessage) {
     expect_refused(path(row.name), row.message);
   }
   expect_refused(path("missing.xyz"), "cannot open");
+  // A FIFO without a writer: refused at once, not waited on.
+  ASSERT_EQ(::mkfifo(path("pipe.xyz").c_str(), 0600), 0);
+  expect_refused(path("pipe.xyz"), "not a regular file");
   expect_refused(dir_.string(), "is a directory");
 }
 

@@ -9,8 +9,12 @@
 
 namespace lsr::adapters {
 
+/// @brief Throws lsr::Error if `path` is a directory, a FIFO, a socket or a device (a missing
+/// path passes: opening it says so).
+void require_regular_file(const std::string& path);
+
 /// @brief Throws lsr::Error (with a hint) when the header of `path` is malformed or declares
-/// more elements than its size allows. Formats by extension: pcd, ply, off, stl, pgm / ppm /
+/// more elements than its size allows. Formats by extension: ply, off, stl, pgm / ppm /
 /// pnm, png; any other extension (no counts in the header: xyz, obj) passes.
 void check_declared_size(const std::string& path);
 

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file ply_points.cpp
+/// @brief The vertex element's x, y, z from a PLY file: ascii rows are read as a stream of
+/// tokens, binary rows as bytes; rows of elements before the vertices are skipped.
+#include "binary_scalars.h"
+#include "header_lines.h"
+#include "ply_header.h"
+#include "point_file_readers.h"
+
+#include "lsrecon/core/errors.h"
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+
+namespace lsr::adapters::detail {
+namespace {
+
+[[noreturn]] void corrupt(const std::string& path, const std::string& why) {
+  throw Error(path + ": " + why, "the file is corrupt or truncated; re-export it");
+}
+
+// Reads rows one property at a time, from text or bytes.
+class RowReader {
+ public:
+  RowReader(const std::string& path, std::istream& in, PlyHeader::Format format)
+      : path_(path), in_(in), ascii_(format == PlyHeader::Format::ascii),
+        swap_((format == PlyHeader::Format::binary_little_endian) != host_is_little_endian()) {}
+
+  double value(ScalarType type) {
+    double v = 0.0;
+    if (ascii_) {
+      if (!(in_ >> token_)) corrupt(path_, "the PLY data ends before the last vertex");
+      if (!parse_number(token_, v)) corrupt(path_, "'" + printable(token_) + "' in the PLY data is not a number");
+      return as_declared(v, type);
+    }
+    unsigned char bytes[8];
+    if (!in_.read(reinterpret_cast<char*>(bytes), type.bytes)) corrupt(path_, "the PLY data ends before the last vertex");
+    return decode_scalar(bytes, type, swap_);
+  }
+
+  // A list's items are read and dropped (no list is a coordinate).
+  void skip_list(const PlyProperty& p) {
+    const double n = value(p.list_count);
+    if (!(n >= 0.0) || n != double(std::uint64_t(n))) corrupt(path_, "a PLY list has a negative or fractional length");
+    if (ascii_) {
+      for (double i = 0; i < n; ++i) value(p.type);
+    } else {
+      in_.seekg(std::streamoff(n) * p.type.bytes, std::ios::cur);
+      if (!in_) corrupt(path_, "the PLY data ends before the last vertex");
+    }
+  }
+
+  // The element's rows, the values of properties `wanted` (index per property, -1 if not) in out.
+  template <class Row>
+  void rows(const PlyElement& e, const std::vector<int>& wanted, Row row) {
+    std::array<double, 3> out{};
+    for (double r = 0; r < e.count; ++r) {
+      for (std::size_t p = 0; p < e.properties.size(); ++p) {
+        if (e.properties[p].is_list()) {
+          skip_list(e.properties[p]);
+        } else {
+          const double v = value(e.properties[p].type);
+          if (wanted[p] >= 0) out[std::size_t(wanted[p])] = v;
+        }
+      }
+      row(out);
+    }
+  }
+
+ private:
+  const std::string& path_;
+  std::istream& in_;
+  bool ascii_;
+  bool swap_;
+  std::string token_;
+};
+
+}  // namespace
+
+PointFile read_ply_points(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
+  std::error_code error;
+  const double size = double(std::filesystem::file_size(path, error));
+  if (error) throw Error("cannot read the size of " + path, "pass a regular file");
+  const PlyHeader h = parse_ply_header(path, in);
+  const bool ascii = h.format == PlyHeader::Format::ascii;
+  double elements = 0.0;
+  for (const PlyElement& e : h.elements) elements += e.count;
+  require_declared_fits(path, elements, h.minimum_body_bytes(), size - double(h.body), "elements");
+  RowReader reader(path, in, h.format);
+  for (const PlyElement& e : h.elements) {
+    std::vector<int> wanted(e.properties.size(), -1);
+    int found = 0;
+    for (std::size_t p = 0; p < e.properties.size(); ++p) {
+      for (int k = 0; k < 3; ++k) {
+        if (e.properties[p].name == std::string(1, char('x' + k)) && !e.properties[p].is_list()) {
+          wanted[p] = k;
+          ++found;
+        }
+      }
+    }
+    if (e.name != "vertex") {
+      const bool fixed = std::none_of(e.properties.begin(), e.properties.end(), [](const PlyProperty& p) { return p.is_list(); });
+      if (!ascii && fixed) {
+        in.seekg(std::streamoff(e.count * e.minimum_row_bytes(false)), std::ios::cur);
+      } else {
+        reader.rows(e, wanted, [](const std::array<double, 3>&) {});
+      }
+      if (!in) corrupt(path, "the PLY data ends before the vertices");
+      continue;
+    }
+    if (found != 3) corrupt(path, "the PLY vertex element has no x, y and z (or has one twice)");
+    if (e.count == 0) break;
+    PointFile out;
+    out.points.reserve(std::size_t(e.count));
+    reader.rows(e, wanted, [&](const std::array<double, 3>& c) {
+      const Vec<3> p(c[0], c[1], c[2]);
+      if (p.allFinite()) {
+        out.points.push_back(p);
+      } else {
+        ++out.skipped;
+      }
+    });
+    return out;
+  }
+  corrupt(path, "no vertex element (or an empty one) with x, y and z in the PLY header");
+}
+
+}  // namespace lsr::adapters::detail
