@@ -19,7 +19,7 @@ constexpr const char* kSmoothBunny = "bunny-smooth";
 // dihedral angle at a triangle 3 degrees in the median, under 10 on 94% of the area, against
 // 14 degrees and 31% on the 3,674 triangles of the bunny): the same shape without facet
 // creases about 2.5 spacings apart at 20,000 points, which a scanned object does not have and
-// whose exact normals give Poisson an edge no estimate from the points can (README, the noisy
+// whose exact normals give Poisson an edge no estimate from the points can (docs/benchmarks.md, the noisy
 // bunny).
 TestShape smooth_bunny() {
   TestShape s = make_test_shape("bunny");

@@ -12,7 +12,7 @@
 
 namespace lsr::demos {
 
-/// The draw every figure in README was measured on.
+/// The draw every figure in docs/benchmarks.md was measured on.
 constexpr unsigned kDefaultSeed = 2011;
 
 struct CompareCase {

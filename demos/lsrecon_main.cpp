@@ -17,6 +17,7 @@
 #include "lsrecon/core/resolution_hierarchy.h"
 #include "lsrecon/core/surface_topology.h"
 #include "lsrecon/core/facet_mesh_distance.h"
+#include "staged_outputs.h"
 #include "stopwatch.h"
 
 #include <nlohmann/json.hpp>
@@ -132,8 +133,9 @@ Cli parse(int argc, char** argv) {
       .number("time-step", "DT", s.time_step, 0, 100, "0 = 0.2 / |alpha|")
       .number("max-iterations", "N", s.max_iterations, 1, 1e7, "time steps at most")
       .number("tolerance", "EPS", s.tolerance, 0, 0.5, "stop when data and front are this close; 0 = one local sampling spacing")
-      .number("renormalization-interval", "K", s.renormalization_interval, 0, 1000, "renormalise every K steps; 0 = automatic")
-      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (README: Sampling holes); -1 = 0.06 in 3D, off in 2D; 0 = off");
+      .number("renormalization-interval", "K", s.renormalization_interval, 0, s.patience,
+              "renormalise every K steps (the stopping test measures the front then); 0 = automatic")
+      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (docs/how-it-works.md: Sampling holes); -1 = 0.06 in 3D, off in 2D; 0 = off");
   line.group("data and result")
       .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
             format_number(s.outlier_factor) + " local spacings); by default they are left out")
@@ -275,7 +277,7 @@ using OuterStages = std::vector<std::pair<std::string, double>>;
 
 template <int D>
 void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
-                  const std::string& output, double total, const OuterStages& extra_seconds) {
+                  const std::string& output, double total, const OuterStages& extra_seconds, const std::string& file) {
   using nlohmann::json;
   const lsr::ReconstructionOptions& o = c.solver;
   // The options as given (0 = automatic); lengths in the unit box the data is mapped into.
@@ -316,6 +318,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"input_points", in.points.size() + in.skipped},
                  {"skipped_points", in.skipped + r.skipped_points},
                  {"outlier_points", r.outlier_points},
+                 {"duplicate_points", r.duplicate_points},
                  {"statistical_outlier_points", in.statistical_outliers},
                  {"dimension", D},
                  {"options", options},
@@ -355,12 +358,10 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                              {"inside_measure_input_units", q.inside_measure},
                              {"outside_measure_input_units", q.outside_measure}};
   }
-  lsr::write_file_atomically(c.report, [&](const std::string& file) {
-    std::ofstream j(file);
-    if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
-    j << report.dump(2) << '\n';
-    if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
-  });
+  std::ofstream j(file);
+  if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
+  j << report.dump(2) << '\n';
+  if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
 }
 
 // Why a run stopped short, from what it measured: the step limit, noise, or points never reached.
@@ -385,6 +386,9 @@ void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, boo
   if (!quiet) {
     std::fputc('\n', stderr);
     for (const auto& stage : r.stages) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), r.seconds.at(stage));
+  }
+  if (r.duplicate_points > 0 && !quiet) {
+    std::fprintf(stderr, "lsrecon: merged %zu copies of points given more than once (equal coordinates)\n", r.duplicate_points);
   }
   if (r.outlier_points > 0) {
     std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than %g local spacings); "
@@ -411,22 +415,6 @@ std::size_t distinct_points(lsr::Points<3> p) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
   });
   return std::size_t(std::unique(p.begin(), p.end()) - p.begin());
-}
-
-// Before any work: a result that cannot be written would be lost at the end of the run.
-void check_writable(const std::string& file, const std::string& input) {
-  namespace fs = std::filesystem;
-  const fs::path out(file);
-  const fs::path dir = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  std::error_code e;
-  if (!fs::is_directory(dir, e)) throw lsr::Error("the output directory " + dir.string() + " does not exist", "create it first");
-  if (::access(dir.c_str(), W_OK) != 0) {
-    throw lsr::Error("cannot write in " + dir.string() + " (permission denied)", "write the output elsewhere");
-  }
-  if (fs::is_directory(out, e)) throw lsr::Error(file + " is a directory", "name an output file");
-  if (!input.empty() && fs::exists(out, e) && fs::equivalent(input, out, e)) {
-    throw lsr::Error(file + " is the input file", "name another output file; the input would be overwritten");
-  }
 }
 
 // OUT with .l<k> before its extension: torus.ply -> torus.l0.ply.
@@ -465,16 +453,25 @@ lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
   return lsr::reconstruct<D>(points, c.solver, printer(c.quiet));
 }
 
-// Solve, write (which returns what it wrote and times its stages), report, one summary line.
+// Where each output goes until the run commits them all (staged_outputs.h).
+struct OutputFiles {
+  lsr::demos::StagedOutputs staged;
+  std::vector<std::string> levels;  ///< the temporary of OUT (or of each level's file)
+  std::string report, save_points, volume_mesh;
+};
+
+// Solve, write every output to its temporary (the writer returns what it wrote and times its
+// stages), commit them together, then one summary line per level.
 template <int D, class Write>
 int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points, const OuterStages& read_stages,
-                    lsr::demos::Stopwatch& total, Write write) {
+                    lsr::demos::Stopwatch& total, OutputFiles& files, Write write) {
   std::vector<lsr::ReconstructionResult<D>> levels;
   if (c.levels > 1) {
     levels = lsr::reconstruct_levels<D>(points, c.levels, c.solver, false, printer(c.quiet));
   } else {
     levels.push_back(solve<D>(c, points));
   }
+  std::vector<std::string> lines;
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const lsr::ReconstructionResult<D>& r = levels[k];
     summarize(r, c.solver.outlier_factor, c.quiet);
@@ -483,9 +480,9 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
     const std::string output = c.levels > 1 ? level_path(c.output, int(k)) : c.output;
     OuterStages stages = read_stages;
     lsr::demos::Stopwatch clock;
-    Outcome out = write(r, output, clock, stages);
+    Outcome out = write(r, files.levels[k], clock, stages);
     if (finest && !c.volume_mesh.empty()) {
-      lsr::adapters::write_volume_mesh(c.volume_mesh, r.volume);
+      lsr::adapters::write_volume_mesh(files.volume_mesh, r.volume);
       out.volume = lsr::volume_mesh_quality(r.volume);
       stages.emplace_back("volume mesh", clock.lap());
       const lsr::VolumeMeshQuality& q = out.volume;
@@ -503,26 +500,35 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
       for (const auto& stage : r.stages) seconds += r.seconds.at(stage);
       for (std::size_t s = read_stages.size(); s < stages.size(); ++s) seconds += stages[s].second;
     }
-    if (finest && !c.report.empty()) write_report(c, in, r, out, output, seconds, stages);
-    std::printf("%s: %s, %s after %d steps, %.1f s -> %s\n", c.demo.empty() ? c.input.c_str() : c.demo.c_str(),
-                out.summary.c_str(), r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged",
-                r.iterations, seconds, output.c_str());
+    if (finest && !c.report.empty()) write_report(c, in, r, out, output, seconds, stages, files.report);
+    char line[1024];
+    std::snprintf(line, sizeof(line), "%s: %s, %s after %d steps, %.1f s -> %s\n",
+                  c.demo.empty() ? c.input.c_str() : c.demo.c_str(), out.summary.c_str(),
+                  r.status == lsr::ReconstructionStatus::converged ? "converged" : "NOT converged", r.iterations, seconds,
+                  output.c_str());
+    lines.push_back(line);
   }
+  // A signal during the writing: nothing is committed.
+  if (g_interrupted) return 130;
+  files.staged.commit_all();
+  for (const auto& l : lines) std::fputs(l.c_str(), stdout);
   return 0;
 }
 
 int run(const Cli& c) {
-  for (int k = 0; k < c.levels; ++k) check_writable(c.levels > 1 ? level_path(c.output, k) : c.output, c.input);
-  if (!c.report.empty()) check_writable(c.report, c.input);
-  if (!c.save_points.empty()) check_writable(c.save_points, c.input);
-  if (!c.volume_mesh.empty()) check_writable(c.volume_mesh, c.input);
+  // Before any work: an output that cannot be written would be lost at the end of the run.
+  OutputFiles files{lsr::demos::StagedOutputs(c.input), {}, {}, {}, {}};
+  for (int k = 0; k < c.levels; ++k) files.levels.push_back(files.staged.stage(c.levels > 1 ? level_path(c.output, k) : c.output));
+  if (!c.report.empty()) files.report = files.staged.stage(c.report);
+  if (!c.save_points.empty()) files.save_points = files.staged.stage(c.save_points);
+  if (!c.volume_mesh.empty()) files.volume_mesh = files.staged.stage(c.volume_mesh);
   if (!c.init_mesh.empty() && !std::filesystem::exists(c.init_mesh)) {
     throw lsr::Error("the start mesh " + c.init_mesh + " does not exist", "check the --init-mesh path");
   }
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
-  if (!c.save_points.empty()) lsr::demos::write_points(c.save_points, in.points);
+  if (!c.save_points.empty()) lsr::demos::write_points(files.save_points, in.points);
   const double read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);
@@ -566,7 +572,7 @@ int run(const Cli& c) {
                          " vertices",
                      {}};
     };
-    return solve_and_write<2>(c, in, planar, stages, total, write);
+    return solve_and_write<2>(c, in, planar, stages, total, files, write);
   }
   auto write = [&](const lsr::ReconstructionResult<3>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                    OuterStages& times) {
@@ -583,21 +589,23 @@ int run(const Cli& c) {
                        " component(s), " + (t.watertight ? "watertight" : "NOT watertight"),
                    {}};
   };
-  return solve_and_write<3>(c, in, in.points, stages, total, write);
+  return solve_and_write<3>(c, in, in.points, stages, total, files, write);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const Cli c = parse(argc, argv);
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  // Each ends the run as Ctrl-C does: nothing written. SIGXFSZ (a file size limit) would
+  // otherwise kill the process mid-write; handled, the write fails and says so.
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) std::signal(signal_number, on_interrupt);
   try {
     const int status = run(c);
     if (status == 130) std::fprintf(stderr, "\nlsrecon: interrupted; nothing was written\n");
     return status;
   } catch (const std::exception& e) {
-    std::cerr << (c.quiet ? "" : "\n") << "lsrecon: " << e.what() << '\n';
+    const std::string message = lsr::demos::StagedOutputs::in_destination_terms(e.what());
+    std::cerr << (c.quiet ? "" : "\n") << "lsrecon: " << message << '\n';
     return 1;
   }
 }

@@ -31,6 +31,8 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -142,12 +144,28 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
 
 }  // namespace
 
+// VTK 9.1 renders through X only. Without a display the run starts itself again under xvfb-run
+// (Debian's xvfb), once: what the help's "offscreen" promises.
+void ensure_display(char** argv) {
+  const char* display = std::getenv("DISPLAY");
+  if ((display && *display) || std::getenv("LSRECON_SNAPSHOT_XVFB")) return;
+  ::setenv("LSRECON_SNAPSHOT_XVFB", "1", 1);
+  std::vector<char*> args = {const_cast<char*>("xvfb-run"), const_cast<char*>("-a")};
+  for (char** a = argv; *a; ++a) args.push_back(*a);
+  args.push_back(nullptr);
+  ::execvp("xvfb-run", args.data());
+  std::fprintf(stderr, "lsrecon-snapshot: no X display and no xvfb-run [hint: install xvfb (apt-get install xvfb) or set DISPLAY]\n");
+  std::exit(1);
+}
+
 int main(int argc, char** argv) {
+  ensure_display(argv);
   View v;
   int columns = 0, width = 0, height = 0;
   lsr::demos::CommandLine line("lsrecon-snapshot", LSRECON_VERSION,
                                "usage: lsrecon-snapshot OUTPUT.png INPUT.{ply,vtu}... [options]\n\n"
-                               "Renders meshes (and .vtu volume results) offscreen to one PNG, one view per input.\n");
+                               "Renders meshes (and .vtu volume results) offscreen to one PNG, one view per input\n"
+                               "(without an X display it runs itself under xvfb-run).\n");
   line.group("view")
       .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
       .flag("top", v.top, "look down the z axis (flat, 2D data always is)")

@@ -81,7 +81,7 @@ void write_volume_mesh(const std::string& path, const VolumeMesh<D>& mesh) {
   }
   write_file_atomically(path, [&](const std::string& file) {
     std::ofstream out(file);
-    if (!out) throw Error("cannot open " + file + " for writing", "check the output folder");
+    if (!out) throw Error("cannot open " + path + " for writing", "check the output folder");
     out << std::setprecision(17);
     if (ext == "mesh") {
       write_medit<D>(out, mesh);

@@ -32,7 +32,7 @@ void write_vtu(const std::string& path, const Points<D>& points,
   const int vtk_type = K == 2 ? 3 : K == 3 ? 5 : 10;
   write_file_atomically(path, [&](const std::string& file) {
     std::ofstream out(file);
-    if (!out) throw Error("cannot open " + file + " for writing", "check the output folder");
+    if (!out) throw Error("cannot open " + path + " for writing", "check the output folder");
     out << std::setprecision(17);
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
         << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << points.size()
@@ -63,7 +63,7 @@ void write_vtu(const std::string& path, const Points<D>& points,
     }
     out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     out.close();
-    if (!out) throw Error("writing " + file + " failed", "check free disk space");
+    if (!out) throw Error("writing " + path + " failed", "check free disk space");
   });
 }
 

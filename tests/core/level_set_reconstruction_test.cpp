@@ -157,6 +157,20 @@ TEST(LevelSetReconstruction, SphereFromUnorientedPoints) {
   EXPECT_LE(worst, 2 * r.tolerance);
 }
 
+// The front side of the stopping test is measured at renormalisations: an interval past the
+// stall rule's patience would stop every run at its start (a clean sphere kept step 0 with 100).
+TEST(LevelSetReconstruction, ARenormalizationIntervalPastThePatienceIsRefused) {
+  const Points<3> points = Sphere{Vec<3>(1, 2, 3), 1.0}.sample(3000);
+  ReconstructionOptions o;
+  o.renormalization_interval = o.patience + 1;
+  EXPECT_THROW(reconstruct<3>(points, o), InvalidInput);
+  // At the patience it still converges.
+  o.renormalization_interval = o.patience;
+  const auto r = reconstruct<3>(points, o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  expect_closed_surface(r, 1, {0});
+}
+
 TEST(LevelSetReconstruction, TorusHasGenusOne) {
   const Torus t{Vec<3>(0, 0, 0), 1.0, 0.4};
   ReconstructionOptions o;

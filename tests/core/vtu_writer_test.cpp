@@ -43,7 +43,7 @@ TEST(VtuWriter, WritesPointsCellsAndFields) {
   EXPECT_NE(text.find("NumberOfPoints=\"4\" NumberOfCells=\"1\""), std::string::npos);
   EXPECT_NE(text.find("Name=\"u\""), std::string::npos);
   EXPECT_NE(text.find("\n10\n"), std::string::npos);  // VTK_TETRA
-  EXPECT_FALSE(fs::exists(dir.path / "tet.partial.vtu"));
+  for (const auto& e : fs::directory_iterator(dir.path)) EXPECT_EQ(e.path().string().find(".partial"), std::string::npos);
 }
 
 TEST(VtuWriter, AFailedWriteLeavesTheExistingFileAlone) {
@@ -60,7 +60,7 @@ TEST(VtuWriter, AFailedWriteLeavesTheExistingFileAlone) {
                                      }),
                Error);
   EXPECT_EQ(read(file), "previous");
-  EXPECT_FALSE(fs::exists(dir.path / "keep.partial.vtu"));
+  for (const auto& e : fs::directory_iterator(dir.path)) EXPECT_EQ(e.path().string().find(".partial"), std::string::npos);
   EXPECT_THROW((write_vtu<2, 2>((dir.path / "missing" / "x.vtu").string(), p, {{0, 1}})), Error);
 }
 

@@ -301,7 +301,7 @@ TEST_F(BadInput, NotConvergedHintsNameTheMeasuredCause) {
   EXPECT_NE(r.output.find("an .svg or .txt output"), std::string::npos) << r.output;
 }
 
-// Rows whose answer is a documented result rather than an error (README, "Bad input and limits").
+// Rows whose answer is a documented result rather than an error (docs/bad-input.md).
 TEST_F(BadInput, DegenerateButReadableInputsGiveTheDocumentedResult) {
   // Denormal coordinates: coincide at double precision once mapped to the unit box.
   std::ofstream(path("denormal.xyz")) << "1e-320 0 0\n0 1e-320 0\n0 0 1e-320\n0 0 0\n2e-320 2e-320 2e-320\n";

@@ -5,9 +5,9 @@
 ///
 /// The front evolves by du/dt = |grad u| (beta kappa(u) + alpha d(x)). The paper's curvature
 /// weight beta = 1 bridges concavities: they stall beta |kappa| / alpha outside the data
-/// (DESIGN.md section 9). Every length here follows the local sampling of the data (see
+/// (docs/design.md section 9). Every length here follows the local sampling of the data (see
 /// ReconstructionOptions); the front finds the topology, and a fit through the data places the
-/// surface. README.md lists the measured departures from the paper.
+/// surface. docs/how-it-works.md lists the measured departures from the paper.
 #pragma once
 
 #include "lsrecon/core/adaptive_refinement.h"
@@ -97,7 +97,7 @@ struct ReconstructionOptions {
   /// of curvature), bent to the quadric fitted to their neighbours: they stop the tagged start
   /// and attract the front beyond the gap of the data (tangent_discs.h), so the rim continues
   /// over the hole, while close sheets and creases, which have no rim, are left as the points
-  /// say (README.md has the measurements).
+  /// say (docs/how-it-works.md has the measurements).
   double hole_radius = -1.0;
   double pin_factor = 2.0;  ///< radius (in local spacings) of the cell a reached point pins
   /// dt; 0: 0.2 / |alpha|. The front closes in on the data like exp(-alpha t), and the
@@ -112,7 +112,8 @@ struct ReconstructionOptions {
   int max_iterations = 1000;
   /// Renormalise every k steps; 0: as rarely as keeps |alpha| dt k <= 0.4, which is 2 at the
   /// default dt (half the dominant cost, same accuracy on sphere, torus and star) and 1 for
-  /// large steps (at |alpha| dt = 0.78, k = 2 left islands; measured).
+  /// large steps (at |alpha| dt = 0.78, k = 2 left islands; measured). At most `patience`:
+  /// the stopping test measures the front at renormalisations.
   int renormalization_interval = 0;
   /// Stalled fronts (stall_detection.h): stop after `patience` steps without a better
   /// residual, or when over the last `patience` steps the front moved less than
@@ -143,7 +144,7 @@ struct ReconstructionOptions {
   /// farther than gap_factor s from the data, except within a hole's radius of a spanned hole;
   /// curvature still acts there. Without it the one-sided term pulls such a front on inward:
   /// on 2 of 40 clean 20k draws it sank about 2.4 spacings into one of the widest empty discs,
-  /// past the pinned cells, and the run stopped "not converged" (README.md, Stopping). Ignored
+  /// past the pinned cells, and the run stopped "not converged" (docs/how-it-works.md, Stopping). Ignored
   /// with two_sided.
   bool rest_past_data = true;
   /// Place the surface by a fit through the data once the front has settled: PCA normals
@@ -220,6 +221,8 @@ struct ReconstructionResult {
   Index mesh_vertices = 0, mesh_simplices = 0;
   std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite
   std::size_t outlier_points = 0;  ///< isolated points left out (see outlier_factor)
+  /// copies of another input point (equal coordinates) merged into it: they share its normal
+  std::size_t duplicate_points = 0;
   long solver_iterations = 0;       ///< linear-solver iterations, summed over the steps
   std::map<std::string, double> seconds;  ///< wall time per stage
   std::vector<std::string> stages;        ///< the keys of `seconds` in the order they first ran

@@ -8,7 +8,7 @@
 ///     (Lambda D^-1 + dt beta G^T W G) u' = Lambda D^-1 u + dt alpha Lambda d,
 /// solved matrix-free by Jacobi-preconditioned CG warm-started from u. Vertices on the walls of
 /// the box are advanced by the data term only and eliminated: the paper's natural Neumann rows
-/// there are anti-diffusive (DESIGN.md section 9). The paper's unsymmetric form with GMRES is
+/// there are anti-diffusive (docs/design.md section 9). The paper's unsymmetric form with GMRES is
 /// kept as a reference path, with the same wall rows.
 #pragma once
 

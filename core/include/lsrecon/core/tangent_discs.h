@@ -13,7 +13,7 @@
 /// lie in the sheets and the gap stays open, and at a concave crease a face's disc continues
 /// into the material, not the air. In the reconstruction only the rim points carry discs
 /// (LocalSampling::rim): every other point is its own surface, and discs of noisy points stood
-/// off it by up to a spacing (measured: README.md). A closing by empty balls of radius H (the
+/// off it by up to a spacing (measured: docs/how-it-works.md). A closing by empty balls of radius H (the
 /// earlier rule) filled every gap narrower than 2 H, close sheets and creases included. Flat
 /// discs stood off convex parts by kappa r^2 / 2 and bridged the close strands of a thin
 /// knotted tube (measured).

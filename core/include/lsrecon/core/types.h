@@ -20,7 +20,7 @@ inline constexpr double kPi = 3.14159265358979323846;
 using Index = std::int32_t;
 
 /// A point or vector of R^D. DontAlign makes it safe inside std::vector whatever the C++
-/// standard or Eigen's over-alignment setting (see DESIGN.md section 8).
+/// standard or Eigen's over-alignment setting (see docs/design.md section 8).
 template <int D>
 using Vec = Eigen::Matrix<double, D, 1, Eigen::DontAlign>;
 

@@ -82,7 +82,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// on the input first, for scans with clusters of outliers that the isolated-point rule above
   /// keeps; mean_k = 0 (the default) is off. Removed points get NaN input normals. Keep the
   /// threshold high (3): on a random sample its tail is genuine points of sparse regions, and
-  /// the holes their removal leaves let the front in (README.md, "Outliers").
+  /// the holes their removal leaves let the front in (docs/how-it-works.md, "Outliers").
   void setStatisticalOutlierFilter(int mean_k, double stddev_mul) { statistical_ = {mean_k, stddev_mul}; }
   const lsr::adapters::StatisticalOutlierFilter& getStatisticalOutlierFilter() const { return statistical_; }
   /// @brief Widest sampling hole spanned, in the unit box (the cloud's bounding ball has radius
@@ -114,7 +114,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   /// (lsr::ReconstructionOptions::tolerance).
   void setTolerance(double eps) { options_.tolerance = eps; }
   double getTolerance() const { return options_.tolerance; }
-  /// @brief Renormalise every k steps; 0: automatic
+  /// @brief Renormalise every k steps, k at most 5 (the stall rule's patience); 0: automatic
   /// (lsr::ReconstructionOptions::renormalization_interval).
   void setRenormalizationInterval(int k) { options_.renormalization_interval = k; }
   int getRenormalizationInterval() const { return options_.renormalization_interval; }

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file front_evolution.cpp
+#include "evolution/front_evolution.h"
+
+#include "evolution/drives.h"
+#include "evolution/stopping_test.h"
+
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/renormalization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lsr::detail {
+
+template <int D>
+FrontEvolution<D>::FrontEvolution(const FrontProblem<D>& problem, const ReconstructionOptions& options,
+                                  const FrontSchedule& schedule, StepParameters step)
+    : p_(problem), o_(options), schedule_(schedule), step_(std::move(step)),
+      best_residual_(std::numeric_limits<double>::infinity()) {}
+
+template <int D>
+void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, ReconstructionResult<D>& r, const Progress& progress,
+                            StageClock& clock, double median_eps, double box_scale) {
+  const ReconstructionOptions& o = o_;
+  const int interval = schedule_.interval;
+  const std::size_t nv = p_.mesh.vertices.size();
+  double front_distance = std::numeric_limits<double>::infinity();
+  std::vector<char> pinned(p_.at.size(), 0), held(nv, 0);
+  step_.held = &held;
+  double first_residual = std::numeric_limits<double>::infinity();
+  StallDetector stall(schedule_.stall);
+  double front_area = 0.0;  // of the last renormalised front: the displacement's denominator
+  double progress_fraction = 0.0;
+  best_ = u;
+  bool best_front_ok = false;
+  try {
+    // Its vectors are kept from step to step, released before each renormalisation (the
+    // loop's peak) and freed before the fit.
+    SemiImplicitStepper<D> stepper(p_.ops);
+    Eigen::VectorXd before;
+    for (int n = 1; n <= o.max_iterations; ++n) {
+      progress.update("solve", progress_fraction);
+      SolverReport solve;
+      before = u;
+      if (o.two_sided) {
+        stepper.advance(two_sided_drive(p_.ops, d, p_.away_from_data, u), u, step_, &solve);
+      } else if (schedule_.rest_past_data) {
+        const Eigen::VectorXd gap = o.gap_factor * p_.scale;
+        stepper.advance(drive_resting_past_data(p_.ops, d, p_.away_from_data, u, p_.dist, gap, p_.near_hole, step_.alpha), u,
+                        step_, &solve);
+      } else {
+        stepper.advance(d, u, step_, &solve);
+      }
+      const double displacement = front_displacement(before, u, p_.ops.ball_measure, p_.scale, D, front_area);
+      r.solver_iterations += solve.iterations;
+      clock.end("solve");
+      if (o.pin_reached_data && !o.two_sided) pin_reached_data(p_.at, p_.cells, u, step_.alpha, p_.reach, pinned, d, held);
+      if (n % interval == 0) {
+        // Against the driving d: a piece of front held by pinned cells has settled, and what
+        // it spans is the resolution limit, not a reason to go on. Not near spanned holes: a
+        // front that crept past a hole's rim is the fit's to correct (attach_fit), and held 4
+        // of 80 holey draws "not converged" (measured).
+        stepper.release();  // the renormalisation is the loop's memory peak
+        const RenormalizationReport<D> renormalized = renormalize(p_.mesh, p_.neighbours, u, schedule_.band, o.threads);
+        front_distance = max_front_distance(renormalized.front, d, p_.front_tolerance, p_.near_hole);
+        front_area = front_measure(renormalized.front);
+        clock.end("renormalize");
+      }
+      const std::vector<double> per_point = data_residuals(p_.at, u, p_.eps);
+      const double data_residual = *std::max_element(per_point.begin(), per_point.end());
+      // Converged when every data point is within its eps of the front and the front within
+      // its tolerance of the data; the residual is the worse of the two, in tolerances.
+      const double residual = std::max(data_residual, front_distance);
+      r.residual_history.push_back(residual * median_eps / box_scale);
+      // The data side falls geometrically (the front side can drop at once when a bubble
+      // vanishes): progress is the fraction of log(first) it has covered, never receding.
+      if (!std::isfinite(first_residual)) first_residual = data_residual;
+      if (first_residual > 1.0) {
+        progress_fraction = std::max(progress_fraction, std::clamp(std::log(first_residual / std::max(data_residual, 1.0)) /
+                                                                       std::log(first_residual), 0.0, 1.0));
+      }
+      r.iterations = n;
+      if (residual < best_residual_) {
+        best_residual_ = residual;
+        best_ = u;
+        best_is_distance_ = n % interval == 0;
+        r.best_iteration = n;
+        r.unreached_points = std::size_t(std::count_if(per_point.begin(), per_point.end(), [](double x) { return x > 1.0; }));
+        best_front_ok = front_distance <= 1.0;
+      }
+      clock.end("stopping test");
+      // Within tolerance; or, if asked, as good as a stall would leave it (below) without
+      // waiting for the stall.
+      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.unreached_fraction * double(p_.at.size());
+      if (best_residual_ <= 1.0 || (o.stop_when_few_unreached && r.best_iteration == n && few_unreached)) {
+        r.status = ReconstructionStatus::converged;
+        break;
+      }
+      r.stalled = stall.stalled(best_residual_, r.best_iteration == n, displacement);
+      if (r.stalled) {
+        // Stalled: the front no longer gets closer to the last points. Curvature holds it short
+        // of the tip of a sharp concave crease, pinned cells short of a slit between close
+        // sheets; the fit places the surface there. A few such points do not make the run fail.
+        if (few_unreached) r.status = ReconstructionStatus::converged;
+        break;
+      }
+    }
+  } catch (const Cancelled&) {
+    r.status = ReconstructionStatus::cancelled;
+  }
+}
+
+template class FrontEvolution<2>;
+template class FrontEvolution<3>;
+
+}  // namespace lsr::detail

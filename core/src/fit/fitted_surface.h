@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file fitted_surface.h
+/// @brief The fitted surface: the blended local quadrics replace u near the front, within what
+/// the front decided.
+#pragma once
+
+#include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/core/nearest_point_index.h"
+#include "lsrecon/core/quadric_implicit.h"
+#include "lsrecon/core/simplex_geometry.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace lsr::detail {
+
+// The fitted surface: F replaces u on the band of vertices within band_factor local spacings of
+// the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
+// the front's topology decides everything the fit does not reach. Output vertices are then
+// projected onto F itself, which removes the P1 interpolation error of the extraction.
+template <int D>
+void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
+                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
+                const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
+                bool volume, int threads);
+
+/// @brief The blended local quadrics through the data (unit box) with their oriented normals;
+/// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that
+/// PCA's thickness also counts.
+template <int D>
+QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
+                                const std::vector<double>& point_scale, int threads);
+
+}  // namespace lsr::detail

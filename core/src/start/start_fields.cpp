@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file start_fields.cpp
+#include "start/start_fields.h"
+
+#include "mesh/vertices_near.h"
+
+#include "lsrecon/core/errors.h"
+#include "lsrecon/core/outside_flood_fill.h"
+#include "lsrecon/core/renormalization.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace lsr::detail {
+
+template <int D>
+Eigen::VectorXd initial_field(const SimplexMesh<D>& mesh, const NearestPointIndex<D>& data,
+                              InitialFront front, double h_min) {
+  Vec<D> center = Vec<D>::Constant(0.5);
+  double radius = kEnclosingRadius;
+  if (front == InitialFront::inside) {
+    center = Vec<D>::Zero();
+    for (const auto& p : data.points()) center += p;
+    center /= double(data.points().size());
+    radius = 0.5 * data.distance(center);
+    if (radius < 2.0 * h_min) {
+      throw InvalidInput("the data's centroid lies on or near the data, so an inside start does not fit",
+                         "start from the enclosing circle / sphere (the default)");
+    }
+  }
+  Eigen::VectorXd u(mesh.vertices.size());
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) u[i] = (mesh.vertices[i] - center).norm() - radius;
+  return u;
+}
+
+template <int D>
+Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
+                               double band, int threads) {
+  Eigen::VectorXd u(Eigen::Index(flooded.size()));
+  for (std::size_t v = 0; v < flooded.size(); ++v) u[v] = flooded[v] ? 1.0 : -1.0;
+  if (u.minCoeff() > 0.0 || u.maxCoeff() < 0.0) return {};
+  renormalize(mesh, neighbours, u, band, threads);
+  return u;
+}
+
+template <int D>
+Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
+                             const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
+                             const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
+                             SealedCavities& sealed, int threads) {
+  const std::size_t n = mesh.vertices.size();
+  std::vector<char> passable(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const double gap = gap_factor * scale[v];
+    passable[v] = attraction[v] > gap &&
+                  (edge_guard.empty() || attraction[v] > std::min(edge_guard[v], distance[v] - gap));
+  }
+  std::vector<char> reached = flood_from_walls(mesh, passable);
+  sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
+  return flood_distance(mesh, neighbours, reached, band, threads);
+}
+
+template <int D>
+std::vector<double> half_longest_edges(const SimplexMesh<D>& mesh, const VertexNeighbours& n,
+                                       const std::vector<double>& distance, const Eigen::VectorXd& near) {
+  std::vector<double> out(mesh.vertices.size(), 0.0);
+  for (std::size_t v = 0; v < out.size(); ++v) {
+    if (distance[v] > near[Eigen::Index(v)]) continue;
+    for (Index k = n.offsets[v]; k < n.offsets[v + 1]; ++k) {
+      out[v] = std::max(out[v], 0.5 * (mesh.vertices[n.neighbours[k]] - mesh.vertices[v]).norm());
+    }
+  }
+  return out;
+}
+
+template <int D>
+StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,
+                          const LocalSampling<D>& sampling, const Eigen::VectorXd& attraction, const Eigen::VectorXd& distance,
+                          const std::vector<double>& dist, const Eigen::VectorXd& scale, const ReconstructionOptions& o,
+                          double hole_radius, double band, double h_min, const SignedDistance<D>* custom_start,
+                          const UnitBoxTransform<D>& box) {
+  StartField<D> s;
+  Eigen::VectorXd& u = s.u;
+  const std::size_t nv = mesh.vertices.size();
+  u.resize(Eigen::Index(nv));
+  if (custom_start) {
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
+    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nv); ++i) {
+      try {  // an exception must not leave an OpenMP region: NaN, refused just below
+        u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();
+      } catch (...) {
+        u[i] = std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+    if (!u.allFinite() || u.minCoeff() >= 0.0 || u.maxCoeff() < 0.0) {
+      throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
+                         "pass a signed distance that is negative inside a closed curve / surface near the data");
+    }
+  } else if (o.initial_front == InitialFront::tagged) {
+    const std::vector<double> guard =
+        hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + hole_radius).matrix())
+                            : std::vector<double>();
+    SealedCavities sealed;
+    u = tagged_start(mesh, neighbours, attraction, distance, scale, guard, o.gap_factor, band, hole_radius, sealed, o.threads);
+    s.sealed_cavities = sealed.count;
+    if (sealed.count > 0) s.near_opening = near_any(mesh.vertices, sealed.mouth, hole_radius, o.threads);
+    s.tagged = u.size() > 0;
+    const bool has_rims = std::find(sampling.rim.begin(), sampling.rim.end(), 1) != sampling.rim.end();
+    if (D == 3 && s.tagged && !has_rims) u += o.start_offset * scale;
+    if (!s.tagged) u = initial_field(mesh, data, InitialFront::enclosing, h_min);
+  } else {
+    u = initial_field(mesh, data, o.initial_front, h_min);
+  }
+  return s;
+}
+
+template StartField<2> start_field<2>(const SimplexMesh<2>&, const VertexNeighbours&, const NearestPointIndex<2>&,
+                                      const LocalSampling<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                      const std::vector<double>&, const Eigen::VectorXd&, const ReconstructionOptions&, double,
+                                      double, double, const SignedDistance<2>*, const UnitBoxTransform<2>&);
+template StartField<3> start_field<3>(const SimplexMesh<3>&, const VertexNeighbours&, const NearestPointIndex<3>&,
+                                      const LocalSampling<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                      const std::vector<double>&, const Eigen::VectorXd&, const ReconstructionOptions&, double,
+                                      double, double, const SignedDistance<3>*, const UnitBoxTransform<3>&);
+template Eigen::VectorXd initial_field<2>(const SimplexMesh<2>& mesh, const NearestPointIndex<2>& data,
+                              InitialFront front, double h_min);
+template Eigen::VectorXd initial_field<3>(const SimplexMesh<3>& mesh, const NearestPointIndex<3>& data,
+                              InitialFront front, double h_min);
+template Eigen::VectorXd flood_distance<2>(const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
+                               double band, int threads);
+template Eigen::VectorXd flood_distance<3>(const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
+                               double band, int threads);
+template Eigen::VectorXd tagged_start<2>(const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
+                             const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
+                             const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
+                             SealedCavities& sealed, int threads);
+template Eigen::VectorXd tagged_start<3>(const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
+                             const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
+                             const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
+                             SealedCavities& sealed, int threads);
+template std::vector<double> half_longest_edges<2>(const SimplexMesh<2>& mesh, const VertexNeighbours& n,
+                                       const std::vector<double>& distance, const Eigen::VectorXd& near);
+template std::vector<double> half_longest_edges<3>(const SimplexMesh<3>& mesh, const VertexNeighbours& n,
+                                       const std::vector<double>& distance, const Eigen::VectorXd& near);
+
+}  // namespace lsr::detail

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file option_checks_test.cpp
+/// @brief Options out of range are refused with a hint; a cloud beyond the memory budget is
+/// refused before anything is allocated for it.
+#include "limits/memory_budget.h"
+#include "limits/option_checks.h"
+
+#include "lsrecon/core/errors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace lsr::detail {
+namespace {
+
+TEST(OptionChecks, EachOptionOutOfRangeIsRefusedWithAHint) {
+  EXPECT_NO_THROW(check_options(ReconstructionOptions{}));
+  const std::vector<std::function<void(ReconstructionOptions&)>> bad = {
+      [](auto& o) { o.h_min = 1.0; },           [](auto& o) { o.max_resolution = 2.0; },
+      [](auto& o) { o.alpha = NAN; },           [](auto& o) { o.time_step = -1.0; },
+      [](auto& o) { o.tolerance = 1.0; },       [](auto& o) { o.gap_factor = 0.0; },
+      [](auto& o) { o.max_iterations = 0; },    [](auto& o) { o.renormalization_interval = -1; },
+      [](auto& o) { o.renormalization_interval = o.patience + 1; },
+      [](auto& o) { o.outlier_factor = 0.5; },  [](auto& o) { o.max_memory = -1.0; },
+      [](auto& o) { o.alpha = -2.0; },  // an enclosing start with alpha < 0
+  };
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    ReconstructionOptions o;
+    bad[i](o);
+    try {
+      check_options(o);
+      ADD_FAILURE() << "case " << i << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("[hint: "), std::string::npos) << i;
+    }
+  }
+}
+
+TEST(MemoryBudget, TheVerticesThatFitBesideThePoints) {
+  ReconstructionOptions o;
+  o.max_memory = 1e9;
+  // (budget - 1 KB per point) / 1.3 KB per 3D vertex.
+  EXPECT_EQ(memory_limited_vertices<3>(o, 100000), Index((1e9 - 1e8) / 1300.0));
+  EXPECT_EQ(memory_limited_vertices<2>(o, 100000), Index((1e9 - 1e8) / 2000.0));
+  EXPECT_THROW(memory_limited_vertices<3>(o, 1000000), ResourceLimit);
+}
+
+}  // namespace
+}  // namespace lsr::detail
