@@ -5,7 +5,7 @@
 /// a sampled sphere, and the whole pipeline at 20k / 200k / 1M points. Prints figures; asserts
 /// nothing about speed.
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/renormalization.h"

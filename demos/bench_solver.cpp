@@ -6,7 +6,7 @@
 ///   lsrecon-bench-solver            all cases
 ///   lsrecon-bench-solver CASE       one case (0-based)
 #include "command_line.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "stopwatch.h"
 

@@ -4,7 +4,7 @@
 /// (core/shape_corpus.h) with their ground truth.
 #pragma once
 
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <functional>
 #include <string>

@@ -16,7 +16,7 @@
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/nearest_point_index.h"
-#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/testdata/surface_distance.h"
 #include "lsrecon/core/surface_topology.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 #include "stopwatch.h"

@@ -2,7 +2,7 @@
 /// @file openmesh_mesh_test.cpp
 #include "lsrecon/adapters/mesh_file_vertices.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/surface_topology.h"

@@ -4,7 +4,7 @@
 /// that lie or continue past DATA, truncation, and every mesh format lsrecon writes read back.
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
 
 #include <pcl/io/pcd_io.h>

@@ -3,7 +3,7 @@
 #include "lsrecon/adapters/statistical_outliers.h"
 
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <gtest/gtest.h>
 

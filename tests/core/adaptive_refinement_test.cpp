@@ -4,7 +4,7 @@
 /// surface, refusal of meshes that would not fit.
 #include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/point_location.h"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 /// cloud given twice reconstructs exactly as once.
 #include "lsrecon/core/exact_duplicates.h"
 
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 
 #include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/point_simplex_distance.h"

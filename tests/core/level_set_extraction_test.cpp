@@ -4,7 +4,7 @@
 /// and O(h^2) accuracy.
 #include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/surface_topology.h"
 

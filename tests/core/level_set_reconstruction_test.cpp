@@ -8,9 +8,9 @@
 /// through the data then places the surface closer, and the data lie on the true shape; so
 /// the two-sided distance to the truth is below 2 eps, plus the truth's own sampling where it
 /// is measured on samples.
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

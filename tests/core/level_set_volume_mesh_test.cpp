@@ -5,10 +5,10 @@
 /// extracted surface facet for facet, and the inside's measure within the interpolation error.
 #include "core/mesh_checks.h"
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/level_set_volume_mesh.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 /// @file local_sampling_test.cpp
 /// @brief The spacing rule on regular and random samples, the noise and normal estimates.
 #include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 /// @brief The nodal operators on analytic functions: exact gradients of linear functions, the
 /// symmetric identity of appendix C, and convergence of the discrete curvature.
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/p1_operators.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 /// round a crease over the whole neighbourhood.
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/quadric_implicit.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 /// reach, (2 r)^4 / (8 R^3) with pi r^2 rho = 30 (quadric_implicit_test.cpp); facets of size up
 /// to twice the local scale s add their sagitta (2 s)^2 / (8 R) between vertices.
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/shape_corpus.h"
-#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/testdata/shape_corpus.h"
+#include "lsrecon/testdata/surface_distance.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

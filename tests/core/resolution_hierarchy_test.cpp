@@ -4,9 +4,9 @@
 /// before, from cold and from warm starts.
 #include "lsrecon/core/resolution_hierarchy.h"
 
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

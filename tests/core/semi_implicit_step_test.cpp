@@ -3,7 +3,7 @@
 /// @brief The SPD/CG step against the paper's unsymmetric form with GMRES, and its basic
 /// properties.
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/semi_implicit_step.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 /// @file shape_corpus_test.cpp
 /// @brief The corpus's mesh shape (the bunny): its samples lie on the mesh, spread by area,
 /// with outward normals; its signed distance agrees with the mesh's orientation.
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <gtest/gtest.h>
 

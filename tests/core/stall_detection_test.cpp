@@ -3,7 +3,7 @@
 #include "lsrecon/core/stall_detection.h"
 
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/kuhn_bisection.h"
 #include "lsrecon/core/p1_operators.h"
 #include "lsrecon/core/simplex_geometry.h"

@@ -2,9 +2,9 @@
 /// @file surface_distance_test.cpp
 /// @brief The comparison metrics against an independent analytic check.
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/testdata/surface_distance.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 /// @brief The discs span a hole, follow a curved surface across it, and leave the gap between
 /// two close sheets open.
 #include "lsrecon/core/tangent_discs.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include <gtest/gtest.h>
 

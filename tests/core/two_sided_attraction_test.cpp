@@ -4,7 +4,7 @@
 /// attraction the front comes onto the data from both sides and converges to the right shape;
 /// the one-sided term alone cannot.
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

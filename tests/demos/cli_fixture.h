@@ -4,7 +4,7 @@
 #pragma once
 
 #include "lsrecon/adapters/openmesh_mesh.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/surface_topology.h"
 
 #include <gtest/gtest.h>

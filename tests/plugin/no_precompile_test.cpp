@@ -2,7 +2,7 @@
 /// @file no_precompile_test.cpp
 /// @brief A point type without an explicit instantiation, through PCL_NO_PRECOMPILE.
 #define PCL_NO_PRECOMPILE
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 
 #include <pcl/point_types.h>

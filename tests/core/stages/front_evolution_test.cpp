@@ -8,7 +8,7 @@
 #include "start/start_fields.h"
 
 #include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/local_sampling.h"
 

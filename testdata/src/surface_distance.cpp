@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file surface_distance.cpp
-#include "lsrecon/core/surface_distance.h"
+#include "lsrecon/testdata/surface_distance.h"
 
 #include "lsrecon/core/facet_mesh_distance.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file analytic_shapes.cpp
-#include "lsrecon/core/analytic_shapes.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file shape_corpus.cpp
-#include "lsrecon/core/shape_corpus.h"
+#include "lsrecon/testdata/shape_corpus.h"
 
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/facet_mesh_distance.h"

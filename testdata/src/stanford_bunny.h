@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-/// @file stanford_bunny.h
+/// @file stanford_bunny.h (compiled from data/stanford_bunny.off)
 /// @brief The Stanford bunny's closed triangle mesh, for the test corpus (shape_corpus.cpp).
 #pragma once
 
