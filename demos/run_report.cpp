@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file run_report.cpp
+#include "run_report.h"
+
+#include "stopwatch.h"
+
+#include "lsrecon/core/errors.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace lsr::demos {
+
+template <int D>
+void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult<D>& r, const Outcome& out,
+                  const std::string& output, double total, const OuterStages& extra_seconds, const std::string& file) {
+  using nlohmann::json;
+  const lsr::ReconstructionOptions& o = c.solver;
+  // The options as given (0 = automatic); lengths in the unit box the data is mapped into.
+  const json options = {{"resolution", o.h_min > 0.0 ? 1.0 / o.h_min : 0.0},
+                        {"max_resolution", o.max_resolution},
+                        {"max_size_unit_box", o.h_max},
+                        {"grading", o.grading},
+                        {"alpha", o.alpha},
+                        {"curvature_weight", o.curvature_weight},
+                        {"time_step", o.time_step},
+                        {"max_iterations", o.max_iterations},
+                        {"tolerance_unit_box", o.tolerance},
+                        {"hole_radius_unit_box", o.hole_radius},
+                        {"fit_surface", o.fit_surface},
+                        {"outlier_factor", o.outlier_factor},
+                        {"renormalization_interval", o.renormalization_interval},
+                        {"initial_front", initial_front_name(o.initial_front)},
+                        {"max_memory_bytes", o.max_memory},
+                        {"max_mesh_vertices", o.max_vertices},
+                        {"threads", o.threads},
+                        {"two_sided", o.two_sided},
+                        {"levels", c.levels},
+                        {"init_mesh", c.init_mesh},
+                        {"sor_mean_k", c.statistical.mean_k},
+                        {"sor_stddev", c.statistical.stddev_mul}};
+  // Stage times in pipeline order: read, the solver's stages, then what follows them.
+  json stages = json::array();
+  stages.push_back({{"stage", "read"}, {"seconds", extra_seconds.front().second}});
+  for (const auto& stage : r.stages) stages.push_back({{"stage", stage}, {"seconds", r.seconds.at(stage)}});
+  for (std::size_t k = 1; k < extra_seconds.size(); ++k) {
+    stages.push_back({{"stage", extra_seconds[k].first}, {"seconds", extra_seconds[k].second}});
+  }
+  const char* status = r.status == lsr::ReconstructionStatus::converged       ? "converged"
+                       : r.status == lsr::ReconstructionStatus::not_converged ? "not_converged"
+                                                                              : "cancelled";
+  json report = {{"lsrecon_version", LSRECON_VERSION},
+                 {"input", c.demo.empty() ? c.input : "demo:" + c.demo},
+                 {"input_points", in.points.size() + in.skipped},
+                 {"skipped_points", in.skipped + r.skipped_points},
+                 {"outlier_points", r.outlier_points},
+                 {"duplicate_points", r.duplicate_points},
+                 {"statistical_outlier_points", in.statistical_outliers},
+                 {"dimension", D},
+                 {"options", options},
+                 {"h_min_unit_box", r.h_min},
+                 {"mesh_vertices", r.mesh_vertices},
+                 {"mesh_simplices", r.mesh_simplices},
+                 {"time_steps", r.iterations},
+                 {"best_step", r.best_iteration},
+                 {"status", status},
+                 {"converged", r.status == lsr::ReconstructionStatus::converged},
+                 {"residual_input_units", r.residual},
+                 {"residual_history_input_units", r.residual_history},
+                 {"tolerance_input_units", r.tolerance},
+                 {"unreached_points", r.unreached_points},
+                 {"spacing_input_units", r.spacing},
+                 {"noise_input_units", r.noise},
+                 {"tagged_start", r.tagged_start},
+                 {"sealed_cavities", r.sealed_cavities},
+                 {"stage_seconds", stages},
+                 {"total_seconds", total},
+                 {"peak_memory_mib", lsr::demos::peak_memory_mib()},
+                 {"output", output},
+                 {"output_vertices", out.vertices},
+                 {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
+                 {"components", out.components},
+                 {"watertight", out.watertight}};
+  if (!c.volume_mesh.empty()) {
+    const lsr::VolumeMeshQuality& q = out.volume;
+    report["volume_mesh"] = {{"file", c.volume_mesh},
+                             {"inside_simplices", q.inside_simplices},
+                             {"outside_simplices", q.outside_simplices},
+                             {"inverted", q.inverted},
+                             {"surface_vertices_pulled_back", r.volume.pulled_back},
+                             {"min_angle_degrees", q.min_angle_degrees},
+                             {"median_angle_degrees", q.median_angle_degrees},
+                             {"small_angle_fraction", q.small_angle_fraction},
+                             {"inside_measure_input_units", q.inside_measure},
+                             {"outside_measure_input_units", q.outside_measure}};
+  }
+  std::ofstream j(file);
+  if (!j) throw lsr::Error("cannot write the report " + c.report, "check that the folder exists");
+  j << report.dump(2) << '\n';
+  if (!j.flush()) throw lsr::Error("writing " + c.report + " failed", "check free disk space");
+}
+
+// Why a run stopped short, from what it measured: the step limit, noise, or points never reached.
+template <int D>
+std::string not_converged_hint(const lsr::ReconstructionResult<D>& r) {
+  std::ostringstream s;
+  s.precision(3);
+  if (!r.stalled) {
+    s << "it was still improving at the last step: raise --max-iterations";
+  } else if (r.noise > 0.25 * r.spacing) {  // 4 sigma beyond the tolerance: thousands of points
+    s << "the points are noisy or fill a volume (noise " << r.noise << " against a spacing of " << r.spacing
+      << "): raise --tolerance or --curvature-weight";
+  } else {
+    s << r.unreached_points << " point(s) stay beyond the tolerance (a cluster inside the surface?): check "
+      << "them, or raise --tolerance";
+  }
+  return s.str();
+}
+
+template <int D>
+void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, bool quiet) {
+  if (!quiet) {
+    std::fputc('\n', stderr);
+    for (const auto& stage : r.stages) std::fprintf(stderr, "  %-14s %8.3f s\n", stage.c_str(), r.seconds.at(stage));
+  }
+  if (r.duplicate_points > 0 && !quiet) {
+    std::fprintf(stderr, "lsrecon: merged %zu copies of points given more than once (equal coordinates)\n", r.duplicate_points);
+  }
+  if (r.outlier_points > 0) {
+    std::fprintf(stderr, "lsrecon: left out %zu isolated point(s) (nearest neighbour farther than %g local spacings); "
+                         "--keep-outliers keeps them\n", r.outlier_points, outlier_factor);
+  }
+  if (r.sealed_cavities > 0) {
+    std::fprintf(stderr, "lsrecon: closed %d opening(s) narrower than the hole radius through which the outside "
+                         "reached an inside (an open end a sampling hole made); --hole-radius 0 leaves them open\n",
+                 r.sealed_cavities);
+  }
+  if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
+    std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "
+                         "slits between close sheets), where the fit places the surface\n", r.unreached_points);
+  }
+  if (r.status == lsr::ReconstructionStatus::not_converged) {
+    std::fprintf(stderr, "lsrecon: not converged: the best iterate (step %d, residual %.3g > tolerance %.3g) is "
+                         "written [hint: %s]\n",
+                 r.best_iteration, r.residual, r.tolerance, not_converged_hint(r).c_str());
+  }
+}
+
+template void write_report<2>(const Cli&, const Input&, const lsr::ReconstructionResult<2>&, const Outcome&, const std::string&,
+                              double, const OuterStages&, const std::string&);
+template void write_report<3>(const Cli&, const Input&, const lsr::ReconstructionResult<3>&, const Outcome&, const std::string&,
+                              double, const OuterStages&, const std::string&);
+template void summarize<2>(const lsr::ReconstructionResult<2>&, double, bool);
+template void summarize<3>(const lsr::ReconstructionResult<3>&, double, bool);
+
+}  // namespace lsr::demos
