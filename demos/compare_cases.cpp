@@ -49,9 +49,10 @@ std::vector<std::string> case_names() {
   return names;
 }
 
-CompareCase make_case(const std::string& name, int n, const SamplingVariant& variant, unsigned seed) {
+CompareCase make_case(const std::string& name, int n, const SamplingVariant& variant, unsigned seed,
+                      const ScannerSettings* scanner) {
   const TestShape shape = name == kSmoothBunny ? smooth_bunny() : make_test_shape(name);
-  const SampledShape sample = sample_test_shape(shape, n, variant, seed);
+  const SampledShape sample = scanner ? simulate_scan(shape, *scanner, seed) : sample_test_shape(shape, n, variant, seed);
   CompareCase c;
   c.name = name;
   c.points = sample.points;
@@ -60,6 +61,14 @@ CompareCase make_case(const std::string& name, int n, const SamplingVariant& var
   Points<3> truth_normals;
   sample_shape_surface(shape, 100000, 7, c.truth, truth_normals);
   c.diagonal = sample.diagonal;
+  if (scanner) {  // relative to the surface's bounding box, as for the random samples
+    Vec<3> lo = c.truth.front(), hi = c.truth.front();
+    for (const auto& p : c.truth) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    c.diagonal = (hi - lo).norm();
+  }
   c.genus = shape.genus;
   return c;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "lsrecon/testdata/shape_corpus.h"
+#include "lsrecon/testdata/simulated_scan.h"
 
 #include <functional>
 #include <string>
@@ -25,10 +26,12 @@ struct CompareCase {
   std::vector<int> genus;  ///< the true topology, per component
 };
 
-/// @brief points i.i.d. samples of the test shape `name` with the given variant; the seed picks
-/// the draw (the same seed, the same cloud).
+/// @brief points i.i.d. samples of the test shape `name` with the given variant, or its
+/// simulated scan if `scanner` is given (then `points` and `variant` are not used); the seed
+/// picks the draw (the same seed, the same cloud).
 /// @throw lsr::InvalidInput for an unknown name.
-CompareCase make_case(const std::string& name, int points, const SamplingVariant& variant, unsigned seed = kDefaultSeed);
+CompareCase make_case(const std::string& name, int points, const SamplingVariant& variant, unsigned seed = kDefaultSeed,
+                      const ScannerSettings* scanner = nullptr);
 
 /// @brief The names make_case() knows.
 std::vector<std::string> case_names();

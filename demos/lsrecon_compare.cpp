@@ -59,6 +59,7 @@ struct Settings {
   int points = 20000;
   lsr::SamplingVariant variant;
   int seed = int(lsr::demos::kDefaultSeed);
+  lsr::ScannerSettings scanner;  ///< used when scanner.views > 0
   double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
   int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
@@ -311,7 +312,8 @@ lsr::demos::CompareCase file_case(const std::string& path) {
 
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
-                                        ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed))
+                                        ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed),
+                                                                 s.scanner.views > 0 ? &s.scanner : nullptr)
                                         : file_case(s.input);
   if (method == "poisson8-true" && c.normals.empty()) {
     std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
@@ -358,7 +360,11 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   command << self << " --run " << case_name << '/' << method << " --out '" << s.out << "'"
           << (s.input.empty() ? "" : " --input '" + s.input + "'") << " --points " << s.points << " --noise "
           << s.variant.noise << " --holes " << s.variant.holes << " --density-ratio " << s.variant.density_ratio
-          << " --seed " << s.seed << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution << " 2>/dev/null";
+          << " --seed " << s.seed << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution
+          << " --scan-views " << s.scanner.views << " --scan-lines " << s.scanner.lines << " --scan-samples "
+          << s.scanner.samples_per_line << (s.scanner.from_above ? " --from-above" : "") << " --scan-noise "
+          << s.scanner.range_noise << " --misregistration " << s.scanner.registration_angle << " --misregistration-shift "
+          << s.scanner.registration_shift << " 2>/dev/null";
   FILE* pipe = popen(command.str().c_str(), "r");
   std::string row;
   char buffer[4096];
@@ -442,6 +448,13 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
     md << '\n';
   }
   write_ratios(md, rows);
+  if (s.scanner.views > 0) {
+    md << "\nSimulated scans: " << s.scanner.views << " views" << (s.scanner.from_above ? " from above" : "") << ", "
+       << s.scanner.lines << " lines x " << s.scanner.samples_per_line << " samples, range noise " << s.scanner.range_noise
+       << ", misregistration " << s.scanner.registration_angle << " rad and " << s.scanner.registration_shift
+       << " x diagonal per view, seed " << s.seed << ".\n";
+    return;
+  }
   md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
      << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
      << s.variant.density_ratio << ", seed " << s.seed << ". Seconds include normal estimation for the methods "
@@ -473,6 +486,16 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .number("density-ratio", "R", s.variant.density_ratio, 1, 1e4, "densest / sparsest, varying along x")
       .number("seed", "N", s.seed, 0, 2147483647,
               "the draw: another seed, another cloud of the same shape (how much a figure owes to one draw)");
+  s.scanner.views = 0;
+  line.group("simulated scans (instead of i.i.d. samples: --scan-views > 0)")
+      .number("scan-views", "N", s.scanner.views, 0, 100, "viewpoints around the shape; 0 = i.i.d. samples")
+      .flag("from-above", s.scanner.from_above, "viewpoints above the shape only: its underside unseen")
+      .number("scan-lines", "N", s.scanner.lines, 2, 1e5, "scan lines per view")
+      .number("scan-samples", "N", s.scanner.samples_per_line, 2, 1e5, "samples along each line")
+      .number("scan-noise", "S", s.scanner.range_noise, 0, 0.1, "Gaussian range error, relative to the range")
+      .number("misregistration", "RAD", s.scanner.registration_angle, 0, 0.5, "per-view rotation error")
+      .number("misregistration-shift", "S", s.scanner.registration_shift, 0, 0.5,
+              "per-view translation error, times the diagonal");
   line.group("lsrecon")
       .number("hole-radius", "H", s.hole_radius, -1, 0.49, "lsrecon's --hole-radius")
       .number("max-resolution", "R", s.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)");
