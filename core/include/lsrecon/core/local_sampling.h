@@ -66,6 +66,12 @@ struct LocalSampling {
   static constexpr double kRimSmoothness = 0.95;
   static constexpr int kNeighbours = 16;  ///< neighbourhood size, the point itself included
   static constexpr int kSpacingRank = D == 2 ? 2 : 6;  ///< k of the spacing rule
+  /// 3D scan lines (local_sampling.cpp): a cloud whose median elongation is below this is read
+  /// as scan lines; its normals and noise then come from kHoleNeighbours neighbours, and its
+  /// spacing is at least the radius of the largest empty disc among them over kHoleToSpacing
+  static constexpr double kScanLineElongation = 0.4;
+  static constexpr int kHoleNeighbours = 32;
+  static constexpr double kHoleToSpacing = 0.55;
 };
 
 /// @brief Where estimate_local_sampling fits height fields.
