@@ -55,6 +55,7 @@ class RowReader {
   template <class Row>
   void rows(const PlyElement& e, const std::vector<int>& wanted, Row row) {
     std::array<double, 3> out{};
+    if (e.properties.empty()) return;  // rows of nothing, however many (a fuzzer's 6.7e13 took minutes)
     for (double r = 0; r < e.count; ++r) {
       for (std::size_t p = 0; p < e.properties.size(); ++p) {
         if (e.properties[p].is_list()) {

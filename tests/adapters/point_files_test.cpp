@@ -245,6 +245,8 @@ TEST_F(PointFiles, PlyThatLiesOrEndsEarlyIsRefused) {
       {"type", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float128 x\nend_header\n0\n", "unknown PLY property type 'float128'"},
       {"no-xyz", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n", "no x, y and z"},
       {"no-vertex", "ply\nformat ascii 1.0\nelement face 1\nproperty float x\nend_header\n0\n", "no vertex element"},
+      // Found by fuzzing: 6.7e13 rows of an element without properties, read one by one.
+      {"empty-rows", "ply\nformat ascii 1.0\nelement dH 66666666666662\nend_header\n34s?", "no vertex element"},
   };
   for (const Case& c : cases) {
     const std::string path = file(c.name + ".ply", [&](std::ofstream& f) { f << c.content; });
