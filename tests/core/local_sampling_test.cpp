@@ -34,6 +34,25 @@ TEST(LocalSampling, RegularSamplesGiveTheirGap) {
   EXPECT_NEAR(median(c.spacing), 2 * 0.3 * std::sin(kPi / n), 1e-9);
 }
 
+// Scan lines of a plane: samples a apart along x, lines 10 a apart in y. The 16 nearest of a
+// point lie on its line (their PCA normal is any direction across it, their spacing 3 a, the
+// line's); the 32 nearest reach the next lines. Read as scan lines, the normal is the plane's and
+// the spacing at least the largest empty disc between two lines (radius 5 a, seen from
+// candidate centres at 0.96 of it) over kHoleToSpacing.
+TEST(LocalSampling, ScanLinesGiveThePlanesNormalAndASpacingThatSeesTheGapBetweenLines) {
+  const double a = 0.002, gap = 10 * a;
+  Points<3> lines;
+  for (int j = 0; j < 20; ++j) {
+    for (int i = 0; i < 200; ++i) lines.emplace_back(0.3 + a * i, 0.3 + gap * j, 0.5);
+  }
+  const LocalSampling<3> s = estimate_local_sampling(NearestPointIndex<3>(lines));
+  const std::size_t middle = 10 * 200 + 100;
+  EXPECT_NEAR(std::abs(s.normals[middle].z()), 1.0, 1e-9);
+  EXPECT_GE(s.spacing[middle], 0.96 * 0.5 * gap / LocalSampling<3>::kHoleToSpacing);
+  EXPECT_LE(s.spacing[middle], 0.5 * gap / LocalSampling<3>::kHoleToSpacing + 1e-12);
+  EXPECT_LT(median(s.noise), 1e-9);
+}
+
 TEST(LocalSampling, RandomSurfaceSamplesGiveTheSixthNeighbourScaleAndIgnoreDuplicates) {
   // i.i.d. points of density rho on a surface: the 6th-neighbour distance r has
   // pi rho r^2 ~ Gamma(6, 1), whose median is 5.67; so median(spacing) ~ sqrt(5.67 / (pi rho)).
