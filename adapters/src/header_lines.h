@@ -7,12 +7,25 @@
 #include "lsrecon/core/errors.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <istream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace lsr::adapters::detail {
+
+/// @brief Opens `path` for binary reading into `in`; returns its size in bytes.
+/// @throw lsr::Error if it cannot be opened or sized.
+inline double open_sized(const std::string& path, std::ifstream& in) {
+  in.open(path, std::ios::binary);
+  if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
+  std::error_code error;
+  const double size = double(std::filesystem::file_size(path, error));
+  if (error) throw Error("cannot read the size of " + path, "pass a regular file");
+  return size;
+}
 
 /// @brief A header larger than this is refused: real ones are a few hundred bytes.
 constexpr std::streamoff kMaxHeaderBytes = 65536;

@@ -13,7 +13,6 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <vector>
@@ -193,11 +192,8 @@ PointFile read_binary(const std::string& path, std::ifstream& in, const PcdHeade
 }  // namespace
 
 PointFile read_pcd_points(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
-  std::error_code error;
-  const double size = double(std::filesystem::file_size(path, error));
-  if (error) throw Error("cannot read the size of " + path, "pass a regular file");
+  std::ifstream in;
+  const double size = open_sized(path, in);
   const PcdHeader h = parse_header(path, in);
   const double available = size - double(h.body);
   if (h.points == 0) corrupt(path, "the PCD header declares no points");

@@ -10,7 +10,6 @@
 #include "lsrecon/core/errors.h"
 
 #include <array>
-#include <filesystem>
 #include <fstream>
 
 namespace lsr::adapters::detail {
@@ -80,11 +79,8 @@ class RowReader {
 }  // namespace
 
 PointFile read_ply_points(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open " + path, "check the path and the file's permissions");
-  std::error_code error;
-  const double size = double(std::filesystem::file_size(path, error));
-  if (error) throw Error("cannot read the size of " + path, "pass a regular file");
+  std::ifstream in;
+  const double size = open_sized(path, in);
   const PlyHeader h = parse_ply_header(path, in);
   const bool ascii = h.format == PlyHeader::Format::ascii;
   double elements = 0.0;
