@@ -13,6 +13,7 @@
 /// peak memory is its own.
 #include "command_line.h"
 #include "compare_cases.h"
+#include "compare_methods.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/core/nearest_point_index.h"
@@ -46,10 +47,11 @@
 
 namespace {
 
-using Cloud = pcl::PointCloud<pcl::PointNormal>;
+using lsr::demos::kMethods;
+using lsr::demos::Produced;
+using lsr::demos::run_method;
 
-const std::vector<std::string> kMethods = {"lsrecon",       "poisson8", "poisson8-mt", "poisson9", "poisson8-lsrecon",
-                                          "poisson8-true", "mc-hoppe", "mc-rbf",      "gp3"};
+
 
 struct Settings {
   std::string out = "compare-out";
@@ -65,8 +67,6 @@ struct Settings {
   int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
 };
 
-const int kRbfPoints = 1000;  // MarchingCubesRBF solves a dense 2N x 2N system
-
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
@@ -77,191 +77,6 @@ std::vector<std::string> split(const std::string& s) {
 std::string join(const std::vector<std::string>& items, const std::string& separator) {
   std::string out;
   for (const auto& item : items) out += (out.empty() ? "" : separator) + item;
-  return out;
-}
-
-// Normals by PCA of 16 neighbours, oriented away from the centroid: the usual recipe for a
-// closed object, and wrong wherever the surface faces its centroid (a torus's inner side).
-Cloud with_estimated_normals(const pcl::PointCloud<pcl::PointXYZ>::Ptr& xyz) {
-  pcl::NormalEstimationOMP<pcl::PointXYZ, pcl::Normal> ne;
-  pcl::PointCloud<pcl::Normal> normals;
-  ne.setInputCloud(xyz);
-  ne.setKSearch(16);
-  ne.compute(normals);
-  Eigen::Vector4f centroid;
-  pcl::compute3DCentroid(*xyz, centroid);
-  Cloud cloud;
-  for (std::size_t i = 0; i < xyz->size(); ++i) {
-    pcl::PointNormal p;
-    p.x = (*xyz)[i].x;
-    p.y = (*xyz)[i].y;
-    p.z = (*xyz)[i].z;
-    Eigen::Vector3f n(normals[i].normal_x, normals[i].normal_y, normals[i].normal_z);
-    if (!n.allFinite()) continue;
-    if (n.dot(p.getVector3fMap() - centroid.head<3>()) < 0) n = -n;
-    p.normal_x = n.x();
-    p.normal_y = n.y();
-    p.normal_z = n.z();
-    cloud.push_back(p);
-  }
-  return cloud;
-}
-
-Cloud with_true_normals(const lsr::demos::CompareCase& c) {
-  Cloud cloud;
-  for (std::size_t i = 0; i < c.points.size(); ++i) {
-    pcl::PointNormal p;
-    p.x = float(c.points[i].x());
-    p.y = float(c.points[i].y());
-    p.z = float(c.points[i].z());
-    p.normal_x = float(c.normals[i].x());
-    p.normal_y = float(c.normals[i].y());
-    p.normal_z = float(c.normals[i].z());
-    cloud.push_back(p);
-  }
-  return cloud;
-}
-
-// PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
-// weld positions within 1e-7 of the diagonal (float precision) so topology can be judged.
-void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
-          std::vector<std::array<lsr::Index, 3>>& triangles) {
-  lsr::Points<3> raw;
-  std::vector<std::array<lsr::Index, 3>> soup;
-  lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
-  // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
-  // rounding to cells it never separates two copies that straddle a cell boundary.
-  const double tolerance = 1e-6 * diagonal;
-  std::vector<lsr::Index> remap(raw.size(), -1);
-  vertices.clear();
-  if (!raw.empty()) {
-    const lsr::NearestPointIndex<3> index(raw);
-    std::vector<lsr::Index> near;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (remap[i] >= 0) continue;
-      remap[i] = lsr::Index(vertices.size());
-      vertices.push_back(raw[i]);
-      index.within(raw[i], tolerance, near);
-      for (lsr::Index j : near) {
-        if (remap[j] < 0) remap[j] = remap[i];
-      }
-    }
-  }
-  triangles.clear();
-  for (auto t : soup) {
-    for (auto& v : t) v = remap[v];
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
-  }
-}
-
-// " stage 1.23 s" per stage taking 5% of the time or more, slowest first (no commas: CSV).
-std::string stage_breakdown(const std::map<std::string, double>& seconds) {
-  std::vector<std::pair<double, std::string>> stages;
-  double total = 0.0;
-  for (const auto& [stage, t] : seconds) {
-    stages.emplace_back(t, stage);
-    total += t;
-  }
-  std::sort(stages.rbegin(), stages.rend());
-  std::string out;
-  char text[64];
-  for (const auto& [t, stage] : stages) {
-    if (t < 0.05 * total) break;
-    std::snprintf(text, sizeof text, " %s %.2f s", stage.c_str(), t);
-    out += text;
-  }
-  return out;
-}
-
-struct Produced {
-  pcl::PolygonMesh mesh;
-  std::string note;
-  std::vector<double> residuals;  // lsrecon only
-};
-
-Produced run_method(const std::string& method, const lsr::demos::CompareCase& c, const Settings& s) {
-  Produced out;
-  pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
-  for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  if (method == "lsrecon" || method == "poisson8-lsrecon") {
-    pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
-    ls.setInputCloud(xyz);
-    lsr::ReconstructionOptions options;
-    options.hole_radius = s.hole_radius;
-    options.max_resolution = s.max_resolution;
-    ls.setOptions(options);
-    ls.reconstruct(out.mesh);
-    out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
-               std::to_string(ls.getStatus().iterations) + " steps;" +
-               (ls.getStatus().sealed_cavities > 0
-                    ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) +
-                          (ls.getStatus().sealed_cavities == 1 ? " cavity;" : " cavities;")
-                    : std::string()) +
-               stage_breakdown(ls.getStatus().stage_seconds);
-    out.residuals = ls.getStatus().residual_history;
-    for (double& r : out.residuals) r /= ls.getStatus().tolerance;
-    if (method == "lsrecon") return out;
-    // Poisson given lsrecon's oriented normals of the input points.
-    Cloud::Ptr cloud(new Cloud);
-    pcl::concatenateFields(*xyz, ls.getInputNormals(), *cloud);
-    pcl::Poisson<pcl::PointNormal> poisson;
-    poisson.setDepth(8);
-    poisson.setInputCloud(cloud);
-    out.mesh = pcl::PolygonMesh();
-    poisson.reconstruct(out.mesh);
-    out.note = "lsrecon's normals (" + out.note + ")";
-    out.residuals.clear();
-    return out;
-  }
-  Cloud::Ptr cloud(new Cloud(method == "poisson8-true" ? with_true_normals(c) : with_estimated_normals(xyz)));
-  if (method.rfind("poisson", 0) == 0) {
-    pcl::Poisson<pcl::PointNormal> poisson;
-    poisson.setDepth(method == "poisson9" ? 9 : 8);
-    // pcl::Poisson solves on one thread unless told otherwise; poisson8-mt uses every core.
-    if (method == "poisson8-mt") poisson.setThreads(0);
-    poisson.setInputCloud(cloud);
-    poisson.reconstruct(out.mesh);
-    out.note = method == "poisson8-true" ? "true normals"
-               : method == "poisson8-mt" ? "estimated normals; every core"
-                                         : "estimated normals";
-  } else if (method == "mc-hoppe") {
-    pcl::MarchingCubesHoppe<pcl::PointNormal> mc;
-    mc.setInputCloud(cloud);
-    mc.setGridResolution(100, 100, 100);
-    mc.setIsoLevel(0.0f);
-    mc.setPercentageExtendGrid(0.05f);
-    mc.reconstruct(out.mesh);
-    out.note = "grid 100^3";
-  } else if (method == "mc-rbf") {
-    Cloud::Ptr few(new Cloud);
-    const std::size_t stride = std::max<std::size_t>(1, cloud->size() / kRbfPoints);
-    for (std::size_t i = 0; i < cloud->size(); i += stride) few->push_back((*cloud)[i]);
-    pcl::MarchingCubesRBF<pcl::PointNormal> mc;
-    mc.setInputCloud(few);
-    mc.setGridResolution(60, 60, 60);
-    mc.setIsoLevel(0.0f);
-    mc.setPercentageExtendGrid(0.05f);
-    mc.setOffSurfaceDisplacement(float(0.01 * c.diagonal));
-    mc.reconstruct(out.mesh);
-    out.note = "subsampled to " + std::to_string(few->size()) + " points; grid 60^3";
-  } else if (method == "gp3") {
-    pcl::search::KdTree<pcl::PointNormal>::Ptr tree(new pcl::search::KdTree<pcl::PointNormal>);
-    pcl::GreedyProjectionTriangulation<pcl::PointNormal> gp3;
-    gp3.setSearchRadius(0.05 * c.diagonal);
-    gp3.setMu(2.5);
-    gp3.setMaximumNearestNeighbors(100);
-    gp3.setMaximumSurfaceAngle(lsr::kPi / 4);
-    gp3.setMinimumAngle(lsr::kPi / 18);
-    gp3.setMaximumAngle(2 * lsr::kPi / 3);
-    gp3.setNormalConsistency(false);
-    gp3.setInputCloud(cloud);
-    gp3.setSearchMethod(tree);
-    gp3.reconstruct(out.mesh);
-    out.note = "radius 5% of diagonal";
-  } else {
-    throw lsr::InvalidInput("unknown method '" + method + "'",
-                            "use " + join(kMethods, ", "));
-  }
   return out;
 }
 
@@ -310,6 +125,38 @@ lsr::demos::CompareCase file_case(const std::string& path) {
   return c;
 }
 
+// PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
+// weld positions within 1e-7 of the diagonal (float precision) so topology can be judged.
+void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
+          std::vector<std::array<lsr::Index, 3>>& triangles) {
+  lsr::Points<3> raw;
+  std::vector<std::array<lsr::Index, 3>> soup;
+  lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
+  // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
+  // rounding to cells it never separates two copies that straddle a cell boundary.
+  const double tolerance = 1e-6 * diagonal;
+  std::vector<lsr::Index> remap(raw.size(), -1);
+  vertices.clear();
+  if (!raw.empty()) {
+    const lsr::NearestPointIndex<3> index(raw);
+    std::vector<lsr::Index> near;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (remap[i] >= 0) continue;
+      remap[i] = lsr::Index(vertices.size());
+      vertices.push_back(raw[i]);
+      index.within(raw[i], tolerance, near);
+      for (lsr::Index j : near) {
+        if (remap[j] < 0) remap[j] = remap[i];
+      }
+    }
+  }
+  triangles.clear();
+  for (auto t : soup) {
+    for (auto& v : t) v = remap[v];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+  }
+}
+
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
                                         ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed),
@@ -320,7 +167,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     return 0;
   }
   lsr::demos::Stopwatch clock;
-  const Produced p = run_method(method, c, s);
+  const Produced p = run_method(method, c, {s.hole_radius, s.max_resolution});
   const double seconds = clock.lap();
   const double memory = lsr::demos::peak_memory_mib();
   lsr::Points<3> vertices;
