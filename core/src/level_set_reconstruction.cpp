@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file level_set_reconstruction.cpp
-/// @brief The pipeline: normalise -> distance -> adaptive mesh -> u0 -> time loop (step,
-/// renormalise, stopping test) -> extraction of the best iterate -> back to input coordinates.
+/// @brief The pipeline of the paper's figure 2, stage by stage (core/src/<stage>/, see
+/// docs/how-it-works.md): data -> sampling -> mesh -> distance -> operators -> u0 -> time loop
+/// -> fitted surface -> back to input coordinates.
 #include "lsrecon/core/level_set_reconstruction.h"
 
 #include "evolution/drives.h"
@@ -12,6 +13,7 @@
 #include "fit/fitted_surface.h"
 #include "limits/memory_budget.h"
 #include "limits/option_checks.h"
+#include "mesh/data_mesh.h"
 #include "mesh/vertex_fields.h"
 #include "mesh/vertices_near.h"
 #include "sampling/data_preparation.h"
@@ -21,11 +23,9 @@
 
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/point_location.h"
-#include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/renormalization.h"
 #include "lsrecon/core/unit_box_transform.h"
 
-#include <algorithm>
 
 namespace lsr {
 namespace {
@@ -76,18 +76,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("sampling");
 
   // 3. The mesh, fine near the data, coarse away from it.
-  AdaptiveMeshOptions mo;
-  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min, o.max_resolution);
-  // A mesh coarser than the sampling (a clamp or a resolution asked for) resolves no finer
-  // than its own size: tolerances, pins and fits follow the coarser of the two.
-  for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);
-  mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
-  mo.h_max = std::max(o.h_max, mo.h_min);
-  mo.grading = o.grading;
-  mo.max_vertices = max_vertices;
-  mo.threads = o.threads;
-  r.h_min = mo.h_min;
-  AdaptiveMesh<D> adaptive = build_adaptive_mesh(data, mo, progress);
+  AdaptiveMesh<D> adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file data_mesh.cpp
+#include "mesh/data_mesh.h"
+
+#include "sampling/data_preparation.h"
+
+#include <algorithm>
+
+namespace lsr::detail {
+
+template <int D>
+AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
+                          Index max_vertices, const Progress& progress, double& h_min) {
+  AdaptiveMeshOptions mo;
+  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min, o.max_resolution);
+  for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);
+  mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
+  mo.h_max = std::max(o.h_max, mo.h_min);
+  mo.grading = o.grading;
+  mo.max_vertices = max_vertices;
+  mo.threads = o.threads;
+  h_min = mo.h_min;
+  return build_adaptive_mesh(data, mo, progress);
+}
+
+template AdaptiveMesh<2> data_mesh<2>(const NearestPointIndex<2>&, std::vector<double>&, const ReconstructionOptions&, Index,
+                                      const Progress&, double&);
+template AdaptiveMesh<3> data_mesh<3>(const NearestPointIndex<3>&, std::vector<double>&, const ReconstructionOptions&, Index,
+                                      const Progress&, double&);
+
+}  // namespace lsr::detail
