@@ -10,6 +10,7 @@
 #include "lsrecon/core/errors.h"
 
 #include <array>
+#include <cmath>
 #include <fstream>
 
 namespace lsr::adapters::detail {
@@ -41,7 +42,10 @@ class RowReader {
   // A list's items are read and dropped (no list is a coordinate).
   void skip_list(const PlyProperty& p) {
     const double n = value(p.list_count);
-    if (!(n >= 0.0) || n != double(std::uint64_t(n))) corrupt(path_, "a PLY list has a negative or fractional length");
+    // Checked before any conversion: a length past 2^53 (text can say 6.9e79) fits no integer.
+    if (!(n >= 0.0 && n <= 9007199254740992.0) || n != std::floor(n)) {
+      corrupt(path_, "a PLY list has a negative, fractional or impossible length");
+    }
     if (ascii_) {
       for (double i = 0; i < n; ++i) value(p.type);
     } else {

@@ -247,6 +247,9 @@ TEST_F(PointFiles, PlyThatLiesOrEndsEarlyIsRefused) {
       {"no-vertex", "ply\nformat ascii 1.0\nelement face 1\nproperty float x\nend_header\n0\n", "no vertex element"},
       // Found by fuzzing: 6.7e13 rows of an element without properties, read one by one.
       {"empty-rows", "ply\nformat ascii 1.0\nelement dH 66666666666662\nend_header\n34s?", "no vertex element"},
+      // Found by fuzzing: a list length of 6.9e79 in text, converted to an integer (undefined).
+      {"huge-list", ply_header("ascii", 2, "float", "", "property list uchar short l\n") + "0 0 0 1 2\n0 0 0 6.9e79\n" +
+                        std::string(64, ' '), "impossible length"},
   };
   for (const Case& c : cases) {
     const std::string path = file(c.name + ".ply", [&](std::ofstream& f) { f << c.content; });
