@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <regex>
+#include <cctype>
 
 namespace lsr::demos {
 
@@ -38,8 +38,22 @@ std::string StagedOutputs::stage(const std::string& file) {
 }
 
 std::string StagedOutputs::in_destination_terms(std::string message) {
-  static const std::regex kTag("\\.partial-[a-z0-9]{6}");
-  return std::regex_replace(message, kTag, "");
+  // Each ".partial-" and the 6 letters or digits after it go (std::regex would do it, but GCC
+  // 12 warns inside <regex>).
+  const std::string tag = ".partial-";
+  for (std::size_t at = message.find(tag); at != std::string::npos; at = message.find(tag, at)) {
+    std::size_t end = at + tag.size();
+    while (end < message.size() && end < at + tag.size() + 6 &&
+           (std::islower(static_cast<unsigned char>(message[end])) || std::isdigit(static_cast<unsigned char>(message[end])))) {
+      ++end;
+    }
+    if (end == at + tag.size() + 6) {
+      message.erase(at, end - at);
+    } else {
+      at = end;
+    }
+  }
+  return message;
 }
 
 void StagedOutputs::commit_all() {
