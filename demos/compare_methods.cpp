@@ -121,7 +121,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
                     ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) +
                           (ls.getStatus().sealed_cavities == 1 ? " cavity;" : " cavities;")
                     : std::string()) +
-               stage_breakdown(ls.getStatus().stage_seconds);
+               (ls.getStatus().open_side_points > 0 ? " open sides closed;" : "") + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
     if (method == "lsrecon") return out;

@@ -76,6 +76,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"noise_input_units", r.noise},
                  {"tagged_start", r.tagged_start},
                  {"sealed_cavities", r.sealed_cavities},
+                 {"open_side_points", r.open_side_points},
                  {"stage_seconds", stages},
                  {"total_seconds", total},
                  {"peak_memory_mib", lsr::demos::peak_memory_mib()},
@@ -137,6 +138,11 @@ void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, boo
     std::fprintf(stderr, "lsrecon: closed %d opening(s) narrower than the hole radius through which the outside "
                          "reached an inside (an open end a sampling hole made); --hole-radius 0 leaves them open\n",
                  r.sealed_cavities);
+  }
+  if (r.open_side_points > 0) {
+    std::fprintf(stderr, "lsrecon: the data are open (%lld points seen from both sides: an unseen underside, a single "
+                         "view); the open sides were closed where the data wind round more than half\n",
+                 static_cast<long long>(r.open_side_points));
   }
   if (r.status == lsr::ReconstructionStatus::converged && r.unreached_points > 0) {
     std::fprintf(stderr, "lsrecon: converged; the front stalled short of %zu points (sharp concave creases or "

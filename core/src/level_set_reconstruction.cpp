@@ -112,13 +112,17 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.curvature_weight = settings.step.curvature_weight;
   r.tolerance = settings.median_eps / box.scale();
   Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.gap_factor, hole_radius, rims_only, o.threads);
+  const OpenSideInputs<D> open{data, sampling.normals, point_scale, dist, at_vertex.nearest};
   const StartField<D> start = start_field(mesh, neighbours, data, sampling, attract.d, at_vertex.distance, dist, scale, o, hole_radius,
-                                          settings.schedule.band, r.h_min, custom_start, box);
+                                          settings.schedule.band, r.h_min, custom_start, box, D == 3 ? &open : nullptr);
   r.sealed_cavities = start.sealed_cavities;
+  r.open_side_points = start.held.empty() ? 0 : start.open_side_points;
   r.tagged_start = start.tagged;
   clock.end("setup");
   std::vector<char> near_hole;  // within a hole's radius of a vertex over it; empty without
   if (!attract.over_hole.empty()) near_hole = near_any(mesh.vertices, attract.over_hole, hole_radius, o.threads);
+  std::vector<char> near_opening = start.near_opening;
+  close_pocket(start, attract.d, near_hole, near_opening);
   const Points<D> away = o.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
   // 7. The time loop: the front evolves to the data; the best iterate is kept.
@@ -138,7 +142,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.threads);
-    attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.gap_factor, attract.over_hole, start.near_opening, data,
+    attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.gap_factor, attract.over_hole, near_opening, data,
                normals, o.volume_mesh, o.threads);
     clock.end("fit");
   } else {

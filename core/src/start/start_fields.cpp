@@ -3,6 +3,7 @@
 #include "start/start_fields.h"
 
 #include "mesh/vertices_near.h"
+#include "start/open_side_closure.h"
 
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/outside_flood_fill.h"
@@ -49,7 +50,7 @@ template <int D>
 Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
                              const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
-                             SealedCavities& sealed, int threads) {
+                             SealedCavities& sealed, const OpenSideInputs<D>* open, OpenSides& closed, int threads) {
   const std::size_t n = mesh.vertices.size();
   std::vector<char> passable(n);
   for (std::size_t v = 0; v < n; ++v) {
@@ -59,6 +60,11 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
   }
   std::vector<char> reached = flood_from_walls(mesh, passable);
   sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
+  if constexpr (D == 3) {
+    if (!open) return flood_distance(mesh, neighbours, reached, band, threads);
+    closed = close_open_sides(mesh, neighbours, open->data, open->normals, open->point_scale, scale, open->dist, open->nearest,
+                              gap_factor, reached, threads);
+  }
   return flood_distance(mesh, neighbours, reached, band, threads);
 }
 
@@ -80,7 +86,7 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
                           const LocalSampling<D>& sampling, const Eigen::VectorXd& attraction, const Eigen::VectorXd& distance,
                           const std::vector<double>& dist, const Eigen::VectorXd& scale, const ReconstructionOptions& o,
                           double hole_radius, double band, double h_min, const SignedDistance<D>* custom_start,
-                          const UnitBoxTransform<D>& box) {
+                          const UnitBoxTransform<D>& box, const OpenSideInputs<D>* open) {
   StartField<D> s;
   Eigen::VectorXd& u = s.u;
   const std::size_t nv = mesh.vertices.size();
@@ -103,7 +109,12 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
         hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + hole_radius).matrix())
                             : std::vector<double>();
     SealedCavities sealed;
-    u = tagged_start(mesh, neighbours, attraction, distance, scale, guard, o.gap_factor, band, hole_radius, sealed, o.threads);
+    OpenSides closed;
+    u = tagged_start(mesh, neighbours, attraction, distance, scale, guard, o.gap_factor, band, hole_radius, sealed,
+                     open, closed, o.threads);
+    s.open_side_points = closed.two_sided_points;
+    s.held = std::move(closed.held);
+    s.kept = std::move(closed.kept);
     s.sealed_cavities = sealed.count;
     if (sealed.count > 0) s.near_opening = near_any(mesh.vertices, sealed.mouth, hole_radius, o.threads);
     s.tagged = u.size() > 0;
@@ -116,14 +127,31 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
   return s;
 }
 
+template <int D>
+void close_pocket(const StartField<D>& start, Eigen::VectorXd& attraction, std::vector<char>& near_hole,
+                  std::vector<char>& near_opening) {
+  if (start.held.empty()) return;
+  const auto add = [&](std::vector<char>& flags) {
+    if (flags.empty()) flags.assign(start.kept.size(), 0);
+    for (std::size_t v = 0; v < flags.size(); ++v) flags[v] = flags[v] || start.kept[v];
+  };
+  add(near_hole);
+  add(near_opening);
+  for (std::size_t v = 0; v < start.held.size(); ++v) {
+    if (start.held[v]) attraction[Eigen::Index(v)] = 0.0;
+  }
+}
+
+template void close_pocket<2>(const StartField<2>&, Eigen::VectorXd&, std::vector<char>&, std::vector<char>&);
+template void close_pocket<3>(const StartField<3>&, Eigen::VectorXd&, std::vector<char>&, std::vector<char>&);
 template StartField<2> start_field<2>(const SimplexMesh<2>&, const VertexNeighbours&, const NearestPointIndex<2>&,
                                       const LocalSampling<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
                                       const std::vector<double>&, const Eigen::VectorXd&, const ReconstructionOptions&, double,
-                                      double, double, const SignedDistance<2>*, const UnitBoxTransform<2>&);
+                                      double, double, const SignedDistance<2>*, const UnitBoxTransform<2>&, const OpenSideInputs<2>*);
 template StartField<3> start_field<3>(const SimplexMesh<3>&, const VertexNeighbours&, const NearestPointIndex<3>&,
                                       const LocalSampling<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
                                       const std::vector<double>&, const Eigen::VectorXd&, const ReconstructionOptions&, double,
-                                      double, double, const SignedDistance<3>*, const UnitBoxTransform<3>&);
+                                      double, double, const SignedDistance<3>*, const UnitBoxTransform<3>&, const OpenSideInputs<3>*);
 template Eigen::VectorXd initial_field<2>(const SimplexMesh<2>& mesh, const NearestPointIndex<2>& data,
                               InitialFront front, double h_min);
 template Eigen::VectorXd initial_field<3>(const SimplexMesh<3>& mesh, const NearestPointIndex<3>& data,
@@ -135,11 +163,11 @@ template Eigen::VectorXd flood_distance<3>(const SimplexMesh<3>& mesh, const Ver
 template Eigen::VectorXd tagged_start<2>(const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
                              const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
-                             SealedCavities& sealed, int threads);
+                             SealedCavities& sealed, const OpenSideInputs<2>* open, OpenSides& closed, int threads);
 template Eigen::VectorXd tagged_start<3>(const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
                              const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
-                             SealedCavities& sealed, int threads);
+                             SealedCavities& sealed, const OpenSideInputs<3>* open, OpenSides& closed, int threads);
 template std::vector<double> half_longest_edges<2>(const SimplexMesh<2>& mesh, const VertexNeighbours& n,
                                        const std::vector<double>& distance, const Eigen::VectorXd& near);
 template std::vector<double> half_longest_edges<3>(const SimplexMesh<3>& mesh, const VertexNeighbours& n,

@@ -8,6 +8,7 @@
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/nearest_point_index.h"
+#include "start/open_side_closure.h"
 #include "lsrecon/core/simplex_geometry.h"
 #include "lsrecon/core/unit_box_transform.h"
 
@@ -32,6 +33,16 @@ template <int D>
 Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
                                double band, int threads);
 
+// What the open-side closure needs besides the flood (open_side_closure.h).
+template <int D>
+struct OpenSideInputs {
+  const NearestPointIndex<D>& data;
+  const Points<D>& normals;
+  const std::vector<double>& point_scale;
+  const std::vector<double>& dist;
+  const std::vector<Index>& nearest;
+};
+
 // u0 for the tagged start: the region reachable from the walls while staying farther than
 // gap_factor local scales from the data (`attraction`: the distance to the points, or to their
 // tangent discs when holes are spanned). Over a hole the mesh is coarser than the gap: there a
@@ -39,12 +50,13 @@ Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbour
 // without discs), so that no edge jumps the discs' plane; "over a hole" meaning the discs are
 // nearer than the points by more than the gap, so that a coarse mesh over sampled parts does not
 // push the start out. Cavities entered through an opening narrower than `seal_radius` are given
-// back (cavity_sealing.h; `sealed`). Empty when nothing is reachable (data against the walls).
+// back (cavity_sealing.h; `sealed`), and with `open` the pockets behind open sheets
+// (open_side_closure.h; `closed`). Empty when nothing is reachable (data against the walls).
 template <int D>
 Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
                              const std::vector<double>& edge_guard, double gap_factor, double band, double seal_radius,
-                             SealedCavities& sealed, int threads);
+                             SealedCavities& sealed, const OpenSideInputs<D>* open, OpenSides& closed, int threads);
 
 // Half the longest edge at each vertex within `near` of the data (0 elsewhere): see tagged_start.
 template <int D>
@@ -56,6 +68,9 @@ template <int D>
 struct StartField {
   Eigen::VectorXd u;
   std::vector<char> near_opening;  ///< #V: within the hole radius of a sealed opening; empty without
+  std::vector<char> held;          ///< #V: no attraction (open_side_closure.h); empty without
+  std::vector<char> kept;          ///< #V: the front kept, not fitted (open_side_closure.h); empty without
+  Index open_side_points = 0;      ///< data points the flood reached from both sides
   int sealed_cavities = 0;         ///< see ReconstructionResult::sealed_cavities
   bool tagged = false;             ///< the tagged start (else a circle / sphere or the caller's)
 };
@@ -70,6 +85,13 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
                           const LocalSampling<D>& sampling, const Eigen::VectorXd& attraction, const Eigen::VectorXd& distance,
                           const std::vector<double>& dist, const Eigen::VectorXd& scale, const ReconstructionOptions& o,
                           double hole_radius, double band, double h_min, const SignedDistance<D>* custom_start,
-                          const UnitBoxTransform<D>& box);
+                          const UnitBoxTransform<D>& box, const OpenSideInputs<D>* open = nullptr);
+
+// Behind open sheets (open_side_closure.h) the front is held by curvature alone: d := 0 where
+// start.held, and where start.kept the stopping test and the rest past the data ignore the
+// front (`near_hole`) and the fit keeps it (`near_opening`), as over a spanned hole.
+template <int D>
+void close_pocket(const StartField<D>& start, Eigen::VectorXd& attraction, std::vector<char>& near_hole,
+                  std::vector<char>& near_opening);
 
 }  // namespace lsr::detail

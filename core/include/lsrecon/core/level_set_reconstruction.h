@@ -216,6 +216,10 @@ struct ReconstructionResult {
   /// cavities the tagged start's flood entered through an opening narrower than the hole radius
   /// and gave back (cavity_sealing.h): an open end that a sampling hole made
   int sealed_cavities = 0;
+  /// data points the tagged start's flood reached from both sides; when they are many (an
+  /// open scan: an unseen underside, a single view) the sides the flood entered round the
+  /// sheets were closed (docs/how-it-works.md: Open sides), else 0
+  Index open_side_points = 0;
   double noise = 0.0;               ///< estimated noise deviation of the data, input units
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;

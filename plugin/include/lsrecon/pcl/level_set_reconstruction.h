@@ -60,6 +60,9 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     /// insides closed behind an opening narrower than the hole radius (an open end that a
     /// sampling hole made; lsr::ReconstructionResult::sealed_cavities)
     int sealed_cavities = 0;
+    /// points seen from both sides when open sides were closed, else 0
+    /// (lsr::ReconstructionResult::open_side_points)
+    long long open_side_points = 0;
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
     std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };

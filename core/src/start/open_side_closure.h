@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file open_side_closure.h
+/// @brief Closes the sides a scanner never saw (an underside on a table, the back of a single
+/// view): the wall flood of the tagged start entered there and wraps the scanned sheet from
+/// both sides, which the front would follow into a perforated double shell.
+///
+/// A data point is two-sided when the flood's edge lies along both directions of its normal.
+/// When they are many, every point is oriented (towards the side the flood reached; where it
+/// reached both, the one it reached by the shorter path from the walls: the seen side faces the
+/// open space, the other lies in a pocket entered round the sheet's rim), and the pocket is
+/// where the oriented points' winding number exceeds 1/2 (winding_number.h): under an open
+/// sheet, up to the disc spanning its rim. The pocket is taken from the flood; there and in the
+/// band behind two-sided points the front is held by curvature alone. Derivation and
+/// measurements: docs/how-it-works.md (Open sides).
+#pragma once
+
+#include "lsrecon/core/nearest_point_index.h"
+#include "lsrecon/core/simplex_geometry.h"
+#include "lsrecon/core/types.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace lsr::detail {
+
+/// @brief What close_open_sides found.
+struct OpenSides {
+  Index two_sided_points = 0;  ///< data points the flood reached from both sides
+  Index seen_points = 0;       ///< data points the flood reached at all
+  std::vector<char> pocket;    ///< #V: taken back from the flood (empty when nothing was closed)
+  std::vector<char> held;      ///< #V: the pocket and the band behind two-sided points: no attraction
+  std::vector<char> kept;      ///< #V: held, or over the membrane: the front is kept, not fitted
+};
+
+/// @brief Below this share of two-sided points among the points the flood reached the data are
+/// closed (thin parts and sampling gaps make a few): nothing is taken back.
+constexpr double kOpenSideShare = 0.05;
+
+/// @brief Takes the pockets behind open sheets back from `reached` (3D), a flood that keeps
+/// gap_factor local scales from the data.
+/// @param normals the points' unoriented normals, `point_scale` their local scales
+/// @param vertex_scale #V the nearest point's scale, `dist` #V the distance to the data
+template <int D>
+OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,
+                           const Points<D>& normals, const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
+                           const std::vector<double>& dist, const std::vector<Index>& nearest, double gap_factor,
+                           std::vector<char>& reached, int threads);
+
+}  // namespace lsr::detail
