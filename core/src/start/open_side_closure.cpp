@@ -147,20 +147,20 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   }
   // The pocket: what the flood reached where the oriented data wind around it more than half.
   const WindingNumber winding(points, outward, area);
-  out.pocket.assign(nv, 0);
+  std::vector<char> pocket(nv, 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(nv); ++v) {
-    if (reached[std::size_t(v)]) out.pocket[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]) > 0.5;
+    if (reached[std::size_t(v)]) pocket[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]) > 0.5;
   }
   for (std::size_t v = 0; v < nv; ++v) {
-    if (out.pocket[v]) reached[v] = 0;
+    if (pocket[v]) reached[v] = 0;
   }
   // Behind a two-sided sheet the front is held too: where no pocket closed (a thin part seen
   // from one side), the sheet stays a thin closed body instead of a shell the front pinches.
   // The front is kept (not fitted) there and over the membrane: the pocket's surroundings
   // farther from the data than the band.
-  out.held = out.pocket;
-  const std::vector<char> near_pocket = near_any(mesh.vertices, out.pocket, (gap_factor + kBandWidth) * median(point_scale), threads);
+  out.held = pocket;
+  const std::vector<char> near_pocket = near_any(mesh.vertices, pocket, (gap_factor + kBandWidth) * median(point_scale), threads);
   out.kept.assign(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     const auto p = std::size_t(nearest[v]);

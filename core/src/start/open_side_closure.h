@@ -28,8 +28,8 @@ namespace lsr::detail {
 struct OpenSides {
   Index two_sided_points = 0;  ///< data points the flood reached from both sides
   Index seen_points = 0;       ///< data points the flood reached at all
-  std::vector<char> pocket;    ///< #V: taken back from the flood (empty when nothing was closed)
-  std::vector<char> held;      ///< #V: the pocket and the band behind two-sided points: no attraction
+  std::vector<char> held;      ///< #V: the pocket taken back from the flood and the band behind two-sided points:
+                               ///< no attraction (empty when nothing was closed)
   std::vector<char> kept;      ///< #V: held, or over the membrane: the front is kept, not fitted
 };
 

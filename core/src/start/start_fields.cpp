@@ -61,9 +61,10 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
   std::vector<char> reached = flood_from_walls(mesh, passable);
   sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
   if constexpr (D == 3) {
-    if (!open) return flood_distance(mesh, neighbours, reached, band, threads);
-    closed = close_open_sides(mesh, neighbours, open->data, open->normals, open->point_scale, scale, open->dist, open->nearest,
-                              gap_factor, reached, threads);
+    if (open) {
+      closed = close_open_sides(mesh, neighbours, open->data, open->normals, open->point_scale, scale, open->dist, open->nearest,
+                                gap_factor, reached, threads);
+    }
   }
   return flood_distance(mesh, neighbours, reached, band, threads);
 }
