@@ -72,5 +72,12 @@ TEST(OpenSideClosure, ADomeSeenFromOneSideClosesIntoABody) {
   EXPECT_GT(r.open_side_points, 0);
 }
 
+// Closed data are left as they were: the flood reaches every point from outside only.
+TEST(OpenSideClosure, AClosedSurfaceIsLeftAlone) {
+  const ReconstructionResult<3> r = reconstruct<3>(sphere_points(12000));
+  EXPECT_EQ(r.open_side_points, 0);
+  EXPECT_EQ(analyze_surface(r.surface.vertices, r.surface.facets).genus, std::vector<int>{0});
+}
+
 }  // namespace
 }  // namespace lsr::detail
