@@ -25,6 +25,7 @@ constexpr int kSideNeighbours = 16;
 // walls (26% of its points) for sheets.
 constexpr double kBandWidth = 1.5;
 constexpr int kSidePasses = 16;
+constexpr std::size_t kGateStride = 8;
 
 // Which side of its nearest point a band vertex lies on: +1 / -1 along the normal, 0 when it
 // lies off the normal's axis (more than 60 degrees), where the side says nothing.
@@ -86,32 +87,49 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
     }
   }
   if (band.empty()) return out;
-  const std::vector<double> g = distance_from_walls(mesh, neighbours, reached);
   // Per point, the shortest path from the walls to the flood's edge on each side of it (along
   // its normal): a noisy or sparse sheet's two sides are nearest to different points, so each
-  // point looks for the edge within a radius, not among the vertices nearest to it.
+  // point looks for the edge within a radius, not among the vertices nearest to it. Without
+  // path lengths (g empty) only whether each side was reached, on every kGateStride-th point:
+  // enough to tell closed data (a share of 5% from 1/8 of 20k points has a standard error of
+  // 0.4%), at an eighth of the cost (0.18 s of every 200k-point run when all points looked).
   const NearestPointIndex<D> edge(std::move(band));
-  std::vector<double> g_plus(np, kInf), g_minus(np, kInf);
+  std::vector<double> g_plus(np), g_minus(np);
+  const auto find_sides = [&](const std::vector<double>& g, std::size_t stride) {
+    std::fill(g_plus.begin(), g_plus.end(), kInf);
+    std::fill(g_minus.begin(), g_minus.end(), kInf);
 #pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
-  {
-    std::vector<Index> found;
+    {
+      std::vector<Index> found;
 #pragma omp for schedule(dynamic, 256)
-    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(np); ++i) {
-      const auto p = std::size_t(i);
-      edge.within(points[p], (gap_factor + kBandWidth) * point_scale[p], found);
-      for (const Index k : found) {
-        const auto v = std::size_t(band_vertex[std::size_t(k)]);
-        const int s = side_of<D>(mesh.vertices[v], points[p], normals[p]);
-        if (s > 0) g_plus[p] = std::min(g_plus[p], g[v]);
-        if (s < 0) g_minus[p] = std::min(g_minus[p], g[v]);
+      for (std::ptrdiff_t i = 0; i < std::ptrdiff_t((np + stride - 1) / stride); ++i) {
+        const auto p = std::size_t(i) * stride;
+        edge.within(points[p], (gap_factor + kBandWidth) * point_scale[p], found);
+        for (const Index k : found) {
+          const auto v = std::size_t(band_vertex[std::size_t(k)]);
+          const int s = side_of<D>(mesh.vertices[v], points[p], normals[p]);
+          const double length = g.empty() ? 0.0 : g[v];
+          if (s > 0) g_plus[p] = std::min(g_plus[p], length);
+          if (s < 0) g_minus[p] = std::min(g_minus[p], length);
+        }
       }
     }
+  };
+  const auto count_sides = [&](std::size_t stride) {
+    out.seen_points = out.two_sided_points = 0;
+    for (std::size_t p = 0; p < np; p += stride) {
+      out.seen_points += g_plus[p] < kInf || g_minus[p] < kInf;
+      out.two_sided_points += g_plus[p] < kInf && g_minus[p] < kInf;
+    }
+  };
+  find_sides({}, kGateStride);
+  count_sides(kGateStride);
+  if (double(out.two_sided_points) < kOpenSideShare * double(out.seen_points)) {
+    out.seen_points = out.two_sided_points = 0;
+    return out;
   }
-  for (std::size_t p = 0; p < np; ++p) {
-    out.seen_points += g_plus[p] < kInf || g_minus[p] < kInf;
-    out.two_sided_points += g_plus[p] < kInf && g_minus[p] < kInf;
-  }
-  if (double(out.two_sided_points) < kOpenSideShare * double(out.seen_points)) return out;
+  find_sides(distance_from_walls(mesh, neighbours, reached), 1);
+  count_sides(1);
 
   // Every point oriented: away from the data towards the side the flood reached, the nearer
   // one to the walls if it reached both; points it reached on neither side take the sense of

@@ -26,8 +26,8 @@ namespace lsr::detail {
 
 /// @brief What close_open_sides found.
 struct OpenSides {
-  Index two_sided_points = 0;  ///< data points the flood reached from both sides
-  Index seen_points = 0;       ///< data points the flood reached at all
+  Index two_sided_points = 0;  ///< data points the flood reached from both sides (0 when nothing was closed)
+  Index seen_points = 0;       ///< data points the flood reached at all (0 when nothing was closed)
   std::vector<char> held;      ///< #V: the pocket taken back from the flood and the band behind two-sided points:
                                ///< no attraction (empty when nothing was closed)
   std::vector<char> kept;      ///< #V: held, or over the membrane: the front is kept, not fitted
