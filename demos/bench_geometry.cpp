@@ -3,9 +3,9 @@
 /// @brief Times the geometric stages (kd-tree, adaptive mesh, distance field, extraction) on a
 /// sampled sphere (r = 0.3) for 20k and 200k points at h_min = 1/128 and 1/256. Prints figures;
 /// asserts nothing about speed.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
 #include "stopwatch.h"
 
 #include <sys/resource.h>

@@ -4,12 +4,12 @@
 /// queries, refinement, operator application, one time step, renormalisation, extraction) on
 /// a sampled sphere, and the whole pipeline at 20k / 200k / 1M points. Prints figures; asserts
 /// nothing about speed.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
+#include "evolution/renormalization.h"
+#include "evolution/semi_implicit_step.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/renormalization.h"
-#include "lsrecon/core/semi_implicit_step.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <benchmark/benchmark.h>
 

@@ -6,8 +6,9 @@
 ///   lsrecon-bench-solver            all cases
 ///   lsrecon-bench-solver CASE       one case (0-based)
 #include "command_line.h"
-#include "lsrecon/testdata/analytic_shapes.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "stopwatch.h"
 
 #include <sys/resource.h>
@@ -55,7 +56,7 @@ void print(const Case& c, const lsr::ReconstructionResult<D>& r, double total, d
 template <int D, class Sdf>
 void run(const Case& c, const lsr::Points<D>& points, const Sdf& sdf) {
   lsr::ReconstructionOptions o;
-  o.h_min = c.resolution > 0 ? 1.0 / c.resolution : 0.0;
+  o.mesh.h_min = c.resolution > 0 ? 1.0 / c.resolution : 0.0;
   lsr::demos::Stopwatch clock;
   const auto r = lsr::reconstruct<D>(points, o);
   const double total = clock.lap();

@@ -55,7 +55,7 @@ Cli parse(int argc, char** argv) {
   Cli c;
   auto& s = c.solver;
   lsr::demos::CommandLine line("lsrecon", LSRECON_VERSION, kUsage, kExitStatus);
-  std::string init = initial_front_name(s.initial_front);
+  std::string init = initial_front_name(s.start.initial_front);
   bool no_fit = false, keep_outliers = false;
   auto resolution = [&line](const std::string& flag, double r) {
     if (r > 0 && r < 4) line.fail(flag + " must be 0 (automatic) or at least 4");
@@ -72,15 +72,16 @@ Cli parse(int argc, char** argv) {
             "sharing its surface (label 10; box walls 20): .mesh (Medit), .msh (Gmsh 2.2), .vtu")
       .flag("quiet", c.quiet, "no progress on stderr");
   line.group("mesh")
-      .number("resolution", "R", s.h_min > 0 ? 1 / s.h_min : 0.0, 0, 1e5, false,
+      .number("resolution", "R", s.mesh.h_min > 0 ? 1 / s.mesh.h_min : 0.0, 0, 1e5, false,
               "1/h_min, the same mesh size everywhere near the data; 0 = follow the local sampling spacing",
-              [&](double r) { s.h_min = resolution("--resolution", r) > 0 ? 1.0 / r : 0.0; })
-      .number("max-resolution", "R", s.max_resolution, 0, 1e5, false,
+              [&](double r) { s.mesh.h_min = resolution("--resolution", r) > 0 ? 1.0 / r : 0.0; })
+      .number("max-resolution", "R", s.mesh.max_resolution, 0, 1e5, false,
               "cap on the local resolution (finer = more time and memory, closer sheets told apart); "
-              "0 = 256 in 3D, 4096 in 2D",
-              [&](double r) { s.max_resolution = resolution("--max-resolution", r); })
-      .number("max-size", "H", s.h_max, 1e-4, 1, "coarsest mesh size")
-      .number("grading", "C", s.grading, 1e-3, 100, "mesh grading; smaller = wider fine band");
+              "0 = " + format_number(lsr::automatic_defaults(3).max_resolution) + " in 3D, " +
+                  format_number(lsr::automatic_defaults(2).max_resolution) + " in 2D",
+              [&](double r) { s.mesh.max_resolution = resolution("--max-resolution", r); })
+      .number("max-size", "H", s.mesh.h_max, 1e-4, 1, "coarsest mesh size")
+      .number("grading", "C", s.mesh.grading, 1e-3, 100, "mesh grading; smaller = wider fine band");
   line.group("front")
       .text("init", "START", init, "tagged: hug the data from outside (flood from the box walls); "
             "enclose: a sphere around it; inside: a sphere inside it", {"tagged", "enclose", "inside"})
@@ -88,17 +89,19 @@ Cli parse(int argc, char** argv) {
             "start from this closed surface (.ply .obj .off .stl .vtk; a previous scan, a rough model) or, "
             "in 2D, closed curves (.txt as lsrecon writes them), which may cross the data: the front is "
             "then attracted from both sides")
-      .number("alpha", "A", s.alpha, -1e3, 1e3, "attraction to the data; 0 = +2 (from outside), -2 (inside)")
-      .number("curvature-weight", "B", s.curvature_weight, -1, 1e3, "smoothness; < 0 = local, from spacing and noise")
-      .number("time-step", "DT", s.time_step, 0, 100, "0 = 0.2 / |alpha|")
-      .number("max-iterations", "N", s.max_iterations, 1, 1e7, "time steps at most")
-      .number("tolerance", "EPS", s.tolerance, 0, 0.5, "stop when data and front are this close; 0 = one local sampling spacing")
-      .number("renormalization-interval", "K", s.renormalization_interval, 0, s.patience,
+      .number("alpha", "A", s.evolution.alpha, -1e3, 1e3, "attraction to the data; 0 = +" + format_number(lsr::automatic_defaults(3).alpha) + " (from outside), -" +
+                  format_number(lsr::automatic_defaults(3).alpha) + " (inside)")
+      .number("curvature-weight", "B", s.evolution.curvature_weight, -1, 1e3, "smoothness; < 0 = local, from spacing and noise")
+      .number("time-step", "DT", s.evolution.time_step, 0, 100, "0 = " + format_number(lsr::automatic_defaults(3).time_step_factor) + " / |alpha|")
+      .number("max-iterations", "N", s.stopping.max_iterations, 1, 1e7, "time steps at most")
+      .number("tolerance", "EPS", s.stopping.tolerance, 0, 0.5, "stop when data and front are this close; 0 = one local sampling spacing")
+      .number("renormalization-interval", "K", s.evolution.renormalization_interval, 0, s.stopping.patience,
               "renormalise every K steps (the stopping test measures the front then); 0 = automatic")
-      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (docs/how-it-works.md: Sampling holes); -1 = 0.06 in 3D, off in 2D; 0 = off");
+      .number("hole-radius", "H", s.sampling.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (docs/how-it-works.md: Sampling holes); -1 = " +
+                  format_number(lsr::automatic_defaults(3).hole_radius) + " in 3D, off in 2D; 0 = off");
   line.group("data and result")
       .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
-            format_number(s.outlier_factor) + " local spacings); by default they are left out")
+            format_number(s.sampling.outlier_factor) + " local spacings); by default they are left out")
       .number("sor-mean-k", "K", c.statistical.mean_k, 0, 1000,
               "pcl::StatisticalOutlierRemoval first: K neighbours (e.g. 16) for clusters of outliers; 0 = off")
       .number("sor-stddev", "S", c.statistical.stddev_mul, 1e-3, 1e3,
@@ -110,15 +113,15 @@ Cli parse(int argc, char** argv) {
       .number("decimate", "FACES", c.decimate, 4, 1e9, "simplify the 3D result to at most FACES faces; 0 = off")
       .number("smooth", "N", c.smooth, 0, 1000, "N rounds of Laplace smoothing of the 3D result");
   line.group("resources")
-      .number("threads", "N", s.threads, 0, 1024, "0 = all cores")
-      .number("max-memory", "GIB", s.max_memory / double(1 << 30), 0, 1e5, false,
+      .number("threads", "N", s.limits.threads, 0, 1024, "0 = all cores")
+      .number("max-memory", "GIB", s.limits.max_memory / double(1 << 30), 0, 1e5, false,
               "refuse clouds and meshes predicted to need more; 0 = min(4, half the machine's memory)",
-              [&](double gib) { s.max_memory = gib * double(1 << 30); })
-      .number("max-mesh-vertices", "N", s.max_vertices, 0, 2e9, "refuse larger meshes; 0 = from --max-memory");
+              [&](double gib) { s.limits.max_memory = gib * double(1 << 30); })
+      .number("max-mesh-vertices", "N", s.limits.max_vertices, 0, 2e9, "refuse larger meshes; 0 = from --max-memory");
   const std::vector<std::string> positional = line.parse(argc, argv, 1, 2, "INPUT OUTPUT (or --demo SHAPE OUTPUT)");
-  if (no_fit) s.fit_surface = false;
-  if (keep_outliers) s.outlier_factor = 0.0;
-  s.initial_front = init == "inside" ? lsr::InitialFront::inside
+  if (no_fit) s.output.fit_surface = false;
+  if (keep_outliers) s.sampling.outlier_factor = 0.0;
+  s.start.initial_front = init == "inside" ? lsr::InitialFront::inside
                     : init == "enclose" ? lsr::InitialFront::enclosing
                                         : lsr::InitialFront::tagged;
   const std::size_t expected = c.demo.empty() ? 2 : 1;
@@ -144,7 +147,7 @@ Cli parse(int argc, char** argv) {
     if (is_mesh_output(out) && !is_mesh_output(start)) {
       line.fail("for a surface, --init-mesh takes a closed mesh: " + lsr::adapters::extensions(lsr::adapters::FileRole::mesh_output));
     }
-    s.two_sided = true;
+    s.evolution.two_sided = true;
   }
   if (!c.volume_mesh.empty()) {
     if (!lsr::adapters::has_role(lsr::adapters::file_extension(c.volume_mesh), lsr::adapters::FileRole::volume_output)) {
@@ -152,7 +155,7 @@ Cli parse(int argc, char** argv) {
                 lsr::adapters::extensions(lsr::adapters::FileRole::volume_output));
     }
     if (c.decimate > 0 || c.smooth > 0) line.fail("--decimate and --smooth would detach the surface from --volume-mesh");
-    s.volume_mesh = true;
+    s.output.volume_mesh = true;
   }
   return c;
 }

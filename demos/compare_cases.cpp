@@ -2,8 +2,8 @@
 /// @file compare_cases.cpp
 #include "compare_cases.h"
 
+#include "geometry/facet_mesh_distance.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
-#include "lsrecon/core/facet_mesh_distance.h"
 
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 

@@ -111,8 +111,8 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
     ls.setInputCloud(xyz);
     lsr::ReconstructionOptions options;
-    options.hole_radius = s.hole_radius;
-    options.max_resolution = s.max_resolution;
+    options.sampling.hole_radius = s.hole_radius;
+    options.mesh.max_resolution = s.max_resolution;
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +

@@ -14,13 +14,13 @@
 #include "command_line.h"
 #include "compare_cases.h"
 #include "compare_methods.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
-#include "lsrecon/core/nearest_point_index.h"
-#include "lsrecon/testdata/surface_distance.h"
-#include "lsrecon/core/surface_topology.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
+#include "lsrecon/testdata/surface_distance.h"
 #include "stopwatch.h"
+#include "surface/surface_topology.h"
 
 #include <pcl/common/io.h>
 #include <pcl/features/normal_3d_omp.h>

@@ -4,21 +4,21 @@
 /// surface (3D) or closed curves (2D) out. Progress and timings on stderr, an optional JSON
 /// report, outputs written atomically, non-zero exit with a message that says what to change.
 #include "cli_options.h"
-#include "curve_files.h"
-#include "image_points.h"
+#include "geometry/facet_mesh_distance.h"
+#include "lsrecon/adapters/curve_files.h"
+#include "lsrecon/adapters/image_points.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/adapters/statistical_outliers.h"
 #include "lsrecon/adapters/volume_mesh_files.h"
-#include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/resolution_hierarchy.h"
-#include "lsrecon/core/surface_topology.h"
-#include "lsrecon/core/facet_mesh_distance.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "lsrecon/testdata/shape_corpus.h"
 #include "run_report.h"
 #include "staged_outputs.h"
 #include "stopwatch.h"
+#include "surface/surface_topology.h"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -67,7 +67,7 @@ Input read_input(const Cli& c) {
   Input in;
   const std::string ext = lsr::adapters::file_extension(c.input);
   if (lsr::adapters::has_role(ext, lsr::adapters::FileRole::image_input)) {
-    for (const auto& p : lsr::demos::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
+    for (const auto& p : lsr::adapters::read_image_points(c.input)) in.points.emplace_back(p.x(), p.y(), 0.0);
     in.dim = 2;
     return in;
   }
@@ -132,7 +132,7 @@ lsr::ReconstructionResult<D> solve(const Cli& c, const lsr::Points<D>& points) {
       return lsr::reconstruct_from<3>(points, sdf, c.solver, printer(c.quiet));
     }
   } else if (!c.init_mesh.empty()) {
-    const lsr::demos::Curves start = lsr::demos::read_polylines(c.init_mesh);
+    const lsr::adapters::Curves start = lsr::adapters::read_polylines(c.init_mesh);
     std::vector<std::array<lsr::Index, 2>> segments;
     for (const auto& loop : start.loops) {
       for (std::size_t i = 0; i < loop.size(); ++i) segments.push_back({loop[i], loop[(i + 1) % loop.size()]});
@@ -165,7 +165,7 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
   std::vector<std::string> lines;
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const lsr::ReconstructionResult<D>& r = levels[k];
-    summarize(r, c.solver.outlier_factor, c.quiet);
+    summarize(r, c.solver.sampling.outlier_factor, c.quiet);
     if (r.status == lsr::ReconstructionStatus::cancelled) return 130;
     const bool finest = k + 1 == levels.size();
     const std::string output = c.levels > 1 ? level_path(c.output, int(k)) : c.output;
@@ -219,7 +219,7 @@ int run(const Cli& c) {
   lsr::demos::Stopwatch total;
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
-  if (!c.save_points.empty()) lsr::demos::write_points(files.save_points, in.points);
+  if (!c.save_points.empty()) lsr::adapters::write_points(files.save_points, in.points);
   const double read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);
@@ -252,10 +252,10 @@ int run(const Cli& c) {
     auto write = [&](const lsr::ReconstructionResult<2>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                      OuterStages& times) {
       if (out_ext == "svg") {
-        const lsr::demos::Curves start = c.init_mesh.empty() ? lsr::demos::Curves{} : lsr::demos::read_polylines(c.init_mesh);
-        lsr::demos::write_svg(output, r.surface.vertices, r.loops, planar, c.init_mesh.empty() ? nullptr : &start);
+        const lsr::adapters::Curves start = c.init_mesh.empty() ? lsr::adapters::Curves{} : lsr::adapters::read_polylines(c.init_mesh);
+        lsr::adapters::write_svg(output, r.surface.vertices, r.loops, planar, c.init_mesh.empty() ? nullptr : &start);
       } else {
-        lsr::demos::write_polylines(output, r.surface.vertices, r.loops);
+        lsr::adapters::write_polylines(output, r.surface.vertices, r.loops);
       }
       times.emplace_back("write", timer.lap());
       return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true,

@@ -5,7 +5,7 @@
 /// as it was and no temporary behind.
 #pragma once
 
-#include "lsrecon/core/atomic_file.h"
+#include "lsrecon/adapters/atomic_file.h"
 
 #include <filesystem>
 #include <string>

@@ -2,12 +2,12 @@
 /// @file openmesh_mesh.cpp
 #include "lsrecon/adapters/openmesh_mesh.h"
 
+#include "double_mesh_writer.h"
 #include "lsrecon/adapters/file_header_checks.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
-#include "double_mesh_writer.h"
 
-#include "lsrecon/core/atomic_file.h"
+#include "lsrecon/adapters/atomic_file.h"
 #include "lsrecon/core/errors.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>

@@ -17,34 +17,7 @@
 
 namespace lsr::adapters {
 
-std::string file_extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 namespace {
-
-struct Format {
-  const char* extension;
-  std::vector<FileRole> roles;
-};
-
-const std::vector<Format>& formats() {
-  using R = FileRole;
-  static const std::vector<Format> table = {
-      {"xyz", {R::point_input}}, {"txt", {R::point_input, R::curve_output}}, {"xy", {R::point_input}},
-      {"pts", {R::point_input}}, {"pcd", {R::point_input}}, {"ply", {R::point_input, R::mesh_output}},
-      {"obj", {R::point_input, R::mesh_output}}, {"off", {R::point_input, R::mesh_output}},
-      {"stl", {R::point_input, R::mesh_output}}, {"pgm", {R::image_input}}, {"ppm", {R::image_input}},
-      {"pbm", {R::image_input}}, {"pnm", {R::image_input}}, {"png", {R::image_input}}, {"svg", {R::curve_output}},
-      {"vtk", {R::mesh_output}}, {"mesh", {R::volume_output}}, {"msh", {R::volume_output}},
-      {"vtu", {R::volume_output}}};
-  return table;
-}
 
 // Whitespace-separated fields; a line that is one comma- or semicolon-separated field is CSV.
 std::vector<std::string> split_fields(const std::string& line) {
@@ -109,21 +82,6 @@ PointFile read_text(const std::string& path) {
 int detect_dimension(const Points<3>& points) {
   const bool planar = std::all_of(points.begin(), points.end(), [&](const Vec<3>& p) { return p.z() == points[0].z(); });
   return planar && !points.empty() ? 2 : 3;
-}
-
-bool has_role(const std::string& ext, FileRole role) {
-  for (const Format& f : formats()) {
-    if (ext == f.extension) return std::find(f.roles.begin(), f.roles.end(), role) != f.roles.end();
-  }
-  return false;
-}
-
-std::string extensions(FileRole role) {
-  std::string list;
-  for (const Format& f : formats()) {
-    if (has_role(f.extension, role)) list += (list.empty() ? "." : " .") + std::string(f.extension);
-  }
-  return list;
 }
 
 PointFile read_point_file(const std::string& path) {

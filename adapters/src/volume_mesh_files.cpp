@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "lsrecon/adapters/volume_mesh_files.h"
 
+#include "lsrecon/adapters/atomic_file.h"
 #include "lsrecon/adapters/point_files.h"
-#include "lsrecon/core/atomic_file.h"
+#include "lsrecon/adapters/vtu_writer.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/vtu_writer.h"
 
 #include <fstream>
 #include <iomanip>

@@ -17,14 +17,14 @@
 #include "mesh/vertex_fields.h"
 #include "mesh/vertices_near.h"
 #include "sampling/data_preparation.h"
-#include "start/start_fields.h"
 #include "stage_clock.h"
+#include "start/start_fields.h"
 #include "surface/closed_surface.h"
 
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/point_location.h"
-#include "lsrecon/core/renormalization.h"
-#include "lsrecon/core/unit_box_transform.h"
+#include "evolution/renormalization.h"
+#include "mesh/point_location.h"
+#include "sampling/local_sampling.h"
+#include "sampling/unit_box_transform.h"
 
 
 namespace lsr {
@@ -37,7 +37,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
   // Before anything is allocated for the points.
-  const Index max_vertices = o.max_vertices > 0 ? o.max_vertices : memory_limited_vertices<D>(o, input.size());
+  const Index max_vertices = o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size());
   ReconstructionResult<D> r;
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
@@ -55,19 +55,19 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 2. Its local sampling: spacing, noise, normals, rims; isolated points left out.
   progress.update("sampling", -1.0);
-  const double hole_radius = o.hole_radius >= 0.0 ? o.hole_radius : D == 3 ? kAutomaticHoleRadius : 0.0;
+  const double hole_radius = o.sampling.hole_radius >= 0.0 ? o.sampling.hole_radius : automatic_defaults(D).hole_radius;
   // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
   // unless asked for, every point does.
   const bool rims_only = D == 3;
   const HeightFieldsAt fields = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.threads, fields);
-  if (drop_isolated(sampling, o.outlier_factor, in.points, in.kept)) {
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields);
+  if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
     require_spanning(in.points);
     box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(in.points));
-    sampling = estimate_local_sampling(data, o.threads, fields);
+    sampling = estimate_local_sampling(data, o.limits.threads, fields);
   }
   const double spacing = median(sampling.spacing);
   r.noise = median(sampling.noise) / box.scale();
@@ -84,11 +84,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 4. The distance d at the vertices, each vertex's scale, each point's place in the mesh.
   progress.update("distance", -1.0);
-  const VertexFields<D> at_vertex = vertex_fields(data, mesh, sampling, point_scale, o.threads);
+  const VertexFields<D> at_vertex = vertex_fields(data, mesh, sampling, point_scale, o.limits.threads);
   const Eigen::VectorXd& scale = at_vertex.scale;
   const std::vector<double>& dist = at_vertex.dist;
-  const VertexCells cells = pin_cells(scale, data.points().size(), dist, at_vertex.nearest, o.pin_factor);
-  const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.threads);
+  const VertexCells cells = pin_cells(scale, data.points().size(), dist, at_vertex.nearest, o.evolution.pin_factor);
+  const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.limits.threads);
   release_forest(adaptive);  // its last use: a third of the peak at 200k points
   clock.end("distance");
 
@@ -97,21 +97,21 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   VertexNeighbours neighbours;
   P1Operators<D> ops;
   {
-    const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, o.solver == LinearSolver::gmres_reference);
-    neighbours = vertex_neighbours(mesh, geometry, o.threads);
-    ops = assemble_p1_operators(mesh, geometry, o.solver == LinearSolver::gmres_reference, &neighbours, o.threads);
+    const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, o.evolution.solver == LinearSolver::gmres_reference);
+    neighbours = vertex_neighbours(mesh, geometry, o.limits.threads);
+    ops = assemble_p1_operators(mesh, geometry, o.evolution.solver == LinearSolver::gmres_reference, &neighbours, o.limits.threads);
   }
   clock.end("operators");
 
   // 6. The settings, the attraction (spanned holes included) and u0.
   progress.update("setup", -1.0);
   const EvolutionSettings settings = resolve_evolution_settings(
-      o, scale, at_vertex.noise, point_scale, spacing, o.initial_front != InitialFront::tagged || custom_start);
+      o, scale, at_vertex.noise, point_scale, spacing, o.start.initial_front != InitialFront::tagged || custom_start);
   r.time_step = settings.step.time_step;
   r.alpha = settings.step.alpha;
   r.curvature_weight = settings.step.curvature_weight;
   r.tolerance = settings.median_eps / box.scale();
-  Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.gap_factor, hole_radius, rims_only, o.threads);
+  Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.sampling.gap_factor, hole_radius, rims_only, o.limits.threads);
   const OpenSideInputs<D> open{data, sampling.normals, point_scale, dist, at_vertex.nearest};
   const StartField<D> start = start_field(mesh, neighbours, data, sampling, attract.d, at_vertex.distance, dist, scale, o, hole_radius,
                                           settings.schedule.band, r.h_min, custom_start, box, D == 3 ? &open : nullptr);
@@ -120,10 +120,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.tagged_start = start.tagged;
   clock.end("setup");
   std::vector<char> near_hole;  // within a hole's radius of a vertex over it; empty without
-  if (!attract.over_hole.empty()) near_hole = near_any(mesh.vertices, attract.over_hole, hole_radius, o.threads);
+  if (!attract.over_hole.empty()) near_hole = near_any(mesh.vertices, attract.over_hole, hole_radius, o.limits.threads);
   std::vector<char> near_opening = start.near_opening;
   close_pocket(start, attract.d, near_hole, near_opening);
-  const Points<D> away = o.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
+  const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
   // 7. The time loop: the front evolves to the data; the best iterate is kept.
   const FrontProblem<D> problem{mesh,  neighbours,         ops,   at,   cells, settings.eps, settings.reach,
@@ -136,18 +136,18 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // 8. The input's normals, then the surface: the fit through the data, or the front itself.
   const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
   r.point_normals = in.input_normals(normals, input.size());
-  progress.update(o.fit_surface ? "fit" : "extract", -1.0);
-  if (o.fit_surface) {
+  progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
+  if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
-    if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.threads);
+    if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.limits.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.threads);
-    attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.gap_factor, attract.over_hole, near_opening, data,
-               normals, o.volume_mesh, o.threads);
+    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads);
+    attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
+               normals, o.output.volume_mesh, o.limits.threads);
     clock.end("fit");
   } else {
-    r.output_level = o.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, ops, best, r.output_level * box.scale(), data.points(), o.volume_mesh, o.threads);
+    r.output_level = o.output.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
+    attach_front(r, mesh, ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
     clock.end("extract");
   }
 
@@ -183,13 +183,13 @@ ReconstructionResult<D> reconstruct(const Points<D>& points, const Reconstructio
 template <int D>
 ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDistance<D>& initial,
                                          const ReconstructionOptions& options, const ProgressCallback& progress) {
-  if (options.alpha == 0.0 && !options.two_sided) {
+  if (options.evolution.alpha == 0.0 && !options.evolution.two_sided) {
     throw InvalidInput("a custom start needs an explicit alpha, or two-sided attraction",
                        "set alpha > 0 (e.g. 2) if the start encloses the data, < 0 (e.g. -2) if it lies inside, "
                        "or two_sided if it crosses the data");
   }
   ReconstructionOptions o = options;
-  o.initial_front = options.alpha >= 0.0 ? InitialFront::enclosing : InitialFront::inside;
+  o.start.initial_front = options.evolution.alpha >= 0.0 ? InitialFront::enclosing : InitialFront::inside;
   return cancellable_pipeline<D>(points, o, progress, &initial);
 }
 

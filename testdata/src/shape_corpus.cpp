@@ -2,9 +2,9 @@
 /// @file shape_corpus.cpp
 #include "lsrecon/testdata/shape_corpus.h"
 
+#include "geometry/facet_mesh_distance.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/facet_mesh_distance.h"
-#include "lsrecon/core/nearest_point_index.h"
 #include "stanford_bunny.h"
 
 #include <algorithm>

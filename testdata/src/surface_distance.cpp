@@ -2,7 +2,7 @@
 /// @file surface_distance.cpp
 #include "lsrecon/testdata/surface_distance.h"
 
-#include "lsrecon/core/facet_mesh_distance.h"
+#include "geometry/facet_mesh_distance.h"
 
 #include <algorithm>
 #include <cmath>

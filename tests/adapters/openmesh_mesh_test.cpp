@@ -2,10 +2,10 @@
 /// @file openmesh_mesh_test.cpp
 #include "lsrecon/adapters/mesh_file_vertices.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/surface_topology.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 const ReconstructionResult<3>& sphere() {
   static const ReconstructionResult<3> r = [] {
     ReconstructionOptions o;
-    o.h_min = 1.0 / 32;
+    o.mesh.h_min = 1.0 / 32;
     return reconstruct<3>(Sphere{Vec<3>(0, 0, 0), 1.0}.sample(4000), o);
   }();
   return r;

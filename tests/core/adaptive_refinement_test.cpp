@@ -3,9 +3,9 @@
 /// @brief Grading of the adaptive mesh: fine on the data, vertex count that follows the
 /// surface, refusal of meshes that would not fit.
 #include "core/mesh_checks.h"
-#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/point_location.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/point_location.h"
 
 #include <gtest/gtest.h>
 

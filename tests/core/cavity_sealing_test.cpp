@@ -2,10 +2,10 @@
 /// @file cavity_sealing_test.cpp
 /// @brief A wall flood given back the cavities it entered through openings narrower than the
 /// radius, and only those: exact distances to curves on a uniform 2D Kuhn mesh.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/cavity_sealing.h"
-#include "lsrecon/core/kuhn_bisection.h"
-#include "lsrecon/core/outside_flood_fill.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/kuhn_bisection.h"
+#include "start/cavity_sealing.h"
+#include "start/outside_flood_fill.h"
 
 #include <gtest/gtest.h>
 

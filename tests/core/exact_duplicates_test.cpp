@@ -2,10 +2,10 @@
 /// @file exact_duplicates_test.cpp
 /// @brief Equal coordinates merge into their first copy; a set without copies is unchanged; a
 /// cloud given twice reconstructs exactly as once.
-#include "lsrecon/core/exact_duplicates.h"
+#include "sampling/exact_duplicates.h"
 
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 
 #include <gtest/gtest.h>
 
@@ -38,7 +38,7 @@ TEST(ExactDuplicates, ACloudGivenTwiceReconstructsExactlyAsOnce) {
   Points<3> twice = once;
   twice.insert(twice.end(), once.begin(), once.end());
   ReconstructionOptions o;
-  o.threads = 2;
+  o.limits.threads = 2;
   const ReconstructionResult<3> a = reconstruct<3>(once, o), b = reconstruct<3>(twice, o);
   EXPECT_EQ(b.duplicate_points, once.size());
   EXPECT_EQ(b.outlier_points, a.outlier_points);

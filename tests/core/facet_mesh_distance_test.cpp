@@ -2,14 +2,14 @@
 /// @file facet_mesh_distance_test.cpp
 /// @brief Distances to triangle meshes: exact against brute force, and the inside test robust
 /// to rays through edges and vertices.
-#include "lsrecon/core/facet_mesh_distance.h"
+#include "geometry/facet_mesh_distance.h"
 
 #include "core/mesh_checks.h"
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
+#include "geometry/point_simplex_distance.h"
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/point_simplex_distance.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 /// @brief The quadric / cubic choice of a height-field fit: what noise alone removes matches
 /// its prediction, noise seldom buys the cubic terms, a cubic above the noise keeps them and is
 /// recovered within its standard errors.
-#include "lsrecon/core/height_field_fit.h"
+#include "fit/height_field_fit.h"
 
 #include <Eigen/LU>
 #include <gtest/gtest.h>

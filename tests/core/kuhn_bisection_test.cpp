@@ -3,8 +3,8 @@
 /// @brief Conformity and shape regularity of bisection refinement, under arbitrary
 /// (random) refinement orders, in 2D and 3D.
 #include "core/mesh_checks.h"
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/kuhn_bisection.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/kuhn_bisection.h"
 
 #include <gtest/gtest.h>
 

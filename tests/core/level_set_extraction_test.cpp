@@ -3,10 +3,10 @@
 /// @brief Marching triangles / tetrahedra on analytic signed distances: topology, orientation
 /// and O(h^2) accuracy.
 #include "core/mesh_checks.h"
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/surface_topology.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

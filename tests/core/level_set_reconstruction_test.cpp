@@ -8,10 +8,11 @@
 /// through the data then places the surface closer, and the data lie on the true shape; so
 /// the two-sided distance to the truth is below 2 eps, plus the truth's own sampling where it
 /// is measured on samples.
-#include "lsrecon/testdata/analytic_shapes.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -75,9 +76,9 @@ TEST(LevelSetReconstruction, NoisyCircleGivesOneSmoothCurveWithErrorOfTheNoise) 
 TEST(LevelSetReconstruction, InsideStartFindsTheSameCurveAsTheEnclosingStart) {
   const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(2000);
   ReconstructionOptions o;
-  o.h_min = 1.0 / 512;
+  o.mesh.h_min = 1.0 / 512;
   const auto outside = reconstruct<2>(data, o);
-  o.initial_front = InitialFront::inside;
+  o.start.initial_front = InitialFront::inside;
   const auto inside = reconstruct<2>(data, o);
   ASSERT_EQ(inside.loops.size(), 1u);
   EXPECT_EQ(inside.status, ReconstructionStatus::converged);
@@ -90,12 +91,12 @@ TEST(LevelSetReconstruction, CustomStartingCurvesWork) {
   // An off-centre ellipse enclosing the data, and a small circle inside it.
   const Points<2> data = star(3000);
   ReconstructionOptions o;
-  o.h_min = 1.0 / 512;
+  o.mesh.h_min = 1.0 / 512;
   const auto reference = reconstruct<2>(data, o);
-  o.alpha = 2;
+  o.evolution.alpha = 2;
   const auto outer = reconstruct_from<2>(
       data, [](const Vec<2>& p) { return std::hypot((p.x() - 0.1) / 1.5, p.y() / 1.4) - 1.0; }, o);
-  o.alpha = -2;
+  o.evolution.alpha = -2;
   const auto inner = reconstruct_from<2>(data, [](const Vec<2>& p) { return p.norm() - 0.3; }, o);
   const NearestPointIndex<2> ref(reference.surface.vertices);
   for (const auto* r : {&outer, &inner}) {
@@ -104,9 +105,9 @@ TEST(LevelSetReconstruction, CustomStartingCurvesWork) {
     // Both lie within 2 h_min of the data; so within 4 h_min of each other, plus vertex spacing.
     EXPECT_LE(max_distance(r->surface.vertices, ref), 4 * r->tolerance + std::sqrt(2.0) * r->tolerance);
   }
-  o.alpha = 0;
+  o.evolution.alpha = 0;
   EXPECT_THROW(reconstruct_from<2>(data, [](const Vec<2>& p) { return p.norm() - 0.3; }, o), InvalidInput);
-  o.alpha = 2;
+  o.evolution.alpha = 2;
   EXPECT_THROW(reconstruct_from<2>(data, [](const Vec<2>&) { return 1.0; }, o), InvalidInput);
 }
 
@@ -147,7 +148,7 @@ double chamfer(const ReconstructionResult<3>& r, const Shape& shape) {
 TEST(LevelSetReconstruction, SphereFromUnorientedPoints) {
   const Sphere s{Vec<3>(1, 2, 3), 1.0};
   ReconstructionOptions o;
-  o.h_min = 1.0 / 64;
+  o.mesh.h_min = 1.0 / 64;
   const auto r = reconstruct<3>(s.sample(20000), o);
   EXPECT_EQ(r.status, ReconstructionStatus::converged);
   expect_closed_surface(r, 1, {0});
@@ -162,10 +163,10 @@ TEST(LevelSetReconstruction, SphereFromUnorientedPoints) {
 TEST(LevelSetReconstruction, ARenormalizationIntervalPastThePatienceIsRefused) {
   const Points<3> points = Sphere{Vec<3>(1, 2, 3), 1.0}.sample(3000);
   ReconstructionOptions o;
-  o.renormalization_interval = o.patience + 1;
+  o.evolution.renormalization_interval = o.stopping.patience + 1;
   EXPECT_THROW(reconstruct<3>(points, o), InvalidInput);
   // At the patience it still converges.
-  o.renormalization_interval = o.patience;
+  o.evolution.renormalization_interval = o.stopping.patience;
   const auto r = reconstruct<3>(points, o);
   EXPECT_EQ(r.status, ReconstructionStatus::converged);
   expect_closed_surface(r, 1, {0});
@@ -174,7 +175,7 @@ TEST(LevelSetReconstruction, ARenormalizationIntervalPastThePatienceIsRefused) {
 TEST(LevelSetReconstruction, TorusHasGenusOne) {
   const Torus t{Vec<3>(0, 0, 0), 1.0, 0.4};
   ReconstructionOptions o;
-  o.h_min = 1.0 / 64;
+  o.mesh.h_min = 1.0 / 64;
   const auto r = reconstruct<3>(t.sample(20000), o);
   EXPECT_EQ(r.status, ReconstructionStatus::converged);
   expect_closed_surface(r, 1, {1});
@@ -186,7 +187,7 @@ TEST(LevelSetReconstruction, TwoDisjointSpheresAreTwoComponents) {
   Points<3> data = spheres[0].sample(10000);
   for (const auto& p : spheres[1].sample(10000)) data.push_back(p);
   ReconstructionOptions o;
-  o.h_min = 1.0 / 64;
+  o.mesh.h_min = 1.0 / 64;
   const auto r = reconstruct<3>(data, o);
   EXPECT_EQ(r.status, ReconstructionStatus::converged);
   expect_closed_surface(r, 2, {0, 0});
@@ -199,8 +200,8 @@ TEST(LevelSetReconstruction, LargeTimeStepsStayStable) {
   // Unconditional stability (paper 5.2): dt = 100 h_min (4x the default) does not blow up: the
   // result stays finite and near the data. (It may leave small islands; see the notes.)
   ReconstructionOptions o;
-  o.h_min = 1.0 / 256;
-  o.time_step = 100 * o.h_min;
+  o.mesh.h_min = 1.0 / 256;
+  o.evolution.time_step = 100 * o.mesh.h_min;
   const auto r = reconstruct<2>(Circle{Vec<2>(0, 0), 1.0}.sample(1000), o);
   ASSERT_GE(r.loops.size(), 1u);
   EXPECT_TRUE(std::isfinite(r.residual));
@@ -210,7 +211,7 @@ TEST(LevelSetReconstruction, LargeTimeStepsStayStable) {
 TEST(LevelSetReconstruction, ResultDoesNotDependOnScale) {
   const Points<2> unit = star(1500);
   ReconstructionOptions o;
-  o.h_min = 1.0 / 256;
+  o.mesh.h_min = 1.0 / 256;
   const auto a = reconstruct<2>(unit, o);
   for (double scale : {1e-6, 1e6}) {
     Points<2> scaled;
@@ -233,7 +234,7 @@ TEST(LevelSetReconstruction, SkipsNonFinitePointsAndToleratesDuplicates) {
   data.push_back(Vec<2>(std::nan(""), 0));
   data.push_back(Vec<2>(0, std::numeric_limits<double>::infinity()));
   ReconstructionOptions o;
-  o.h_min = 1.0 / 256;
+  o.mesh.h_min = 1.0 / 256;
   const auto r = reconstruct<2>(data, o);
   EXPECT_EQ(r.skipped_points, 2u);
   EXPECT_EQ(r.input_points, data.size());
@@ -262,18 +263,18 @@ TEST(LevelSetReconstruction, RejectsTooFewOrDegeneratePointsWithAHint) {
 TEST(LevelSetReconstruction, RejectsAlphaOfTheWrongSignForTheStart) {
   const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(200);
   ReconstructionOptions o;
-  o.alpha = -2;
+  o.evolution.alpha = -2;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
-  o.alpha = 2;
-  o.initial_front = InitialFront::inside;
+  o.evolution.alpha = 2;
+  o.start.initial_front = InitialFront::inside;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
   o = ReconstructionOptions();
-  o.max_iterations = 0;
+  o.stopping.max_iterations = 0;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
   // A start moved as far as the flood's gap (or away from the data) would not be outside it.
   o = ReconstructionOptions();
-  for (double offset : {-0.5, o.gap_factor, std::nan("")}) {
-    o.start_offset = offset;
+  for (double offset : {-0.5, o.sampling.gap_factor, std::nan("")}) {
+    o.start.start_offset = offset;
     EXPECT_THROW(reconstruct<2>(data, o), InvalidInput) << offset;
   }
 }
@@ -284,12 +285,12 @@ TEST(LevelSetReconstruction, MaxResolutionCapsTheLocalMeshSize) {
   const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(2000);
   const auto fine = reconstruct<2>(data);
   ReconstructionOptions o;
-  o.max_resolution = 16;
+  o.mesh.max_resolution = 16;
   const auto capped = reconstruct<2>(data, o);
   EXPECT_LT(fine.h_min, 1.0 / 16);
   EXPECT_EQ(capped.h_min, 1.0 / 16);
   EXPECT_LT(capped.mesh_vertices, fine.mesh_vertices);
-  o.max_resolution = 2;
+  o.mesh.max_resolution = 2;
   EXPECT_THROW(reconstruct<2>(data, o), InvalidInput);
 }
 
@@ -306,7 +307,7 @@ TEST(LevelSetReconstruction, StagesAreListedOnceInPipelineOrder) {
 TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {
   const Points<2> data = Circle{Vec<2>(0, 0), 1.0}.sample(1000);
   ReconstructionOptions o;
-  o.h_min = 1.0 / 512;
+  o.mesh.h_min = 1.0 / 512;
   int solve_calls = 0;
   const auto r = reconstruct<2>(data, o, [&](const std::string& stage, double) {
     return stage != "solve" || ++solve_calls < 4;
@@ -321,7 +322,7 @@ TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {
 
 TEST(LevelSetReconstruction, IsDeterministic) {
   ReconstructionOptions o;
-  o.h_min = 1.0 / 32;
+  o.mesh.h_min = 1.0 / 32;
   const Points<3> data = Torus{Vec<3>(0, 0, 0), 1.0, 0.4}.sample(3000);
   const auto a = reconstruct<3>(data, o);
   const auto b = reconstruct<3>(data, o);
@@ -334,9 +335,9 @@ TEST(LevelSetReconstruction, IsDeterministic) {
 TEST(LevelSetReconstruction, OneThreadAndTwoGiveTheSameMesh) {
   const Points<3> data = sample_test_shape(make_test_shape("trefoil"), 3000).points;
   ReconstructionOptions o;
-  o.threads = 1;
+  o.limits.threads = 1;
   const auto one = reconstruct<3>(data, o);
-  o.threads = 2;
+  o.limits.threads = 2;
   const auto two = reconstruct<3>(data, o);
   EXPECT_EQ(one.iterations, two.iterations);
   EXPECT_TRUE(one.surface.facets == two.surface.facets);

@@ -4,12 +4,12 @@
 /// positively oriented, regions adding up to the box, the inside's boundary equal to the
 /// extracted surface facet for facet, and the inside's measure within the interpolation error.
 #include "core/mesh_checks.h"
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/level_set_volume_mesh.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
-#include "lsrecon/core/surface_topology.h"
+#include "mesh/adaptive_refinement.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -158,7 +158,7 @@ TEST(LevelSetVolumeMesh, TwoCirclesGiveTwoInsidePiecesAndAConformingOutside) {
 // split keeps every simplex positive, and the output surface is still the inside's boundary.
 TEST(LevelSetVolumeMesh, ReconstructionReturnsMeshesSharingItsSurface) {
   ReconstructionOptions o;
-  o.volume_mesh = true;
+  o.output.volume_mesh = true;
   const Points<3> points = sample_test_shape(make_test_shape("torus"), 3000).points;
   const ReconstructionResult<3> r = reconstruct<3>(points, o);
   ASSERT_EQ(r.status, ReconstructionStatus::converged);

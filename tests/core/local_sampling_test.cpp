@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file local_sampling_test.cpp
 /// @brief The spacing rule on regular and random samples, the noise and normal estimates.
-#include "lsrecon/core/local_sampling.h"
 #include "lsrecon/testdata/shape_corpus.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 

@@ -3,12 +3,12 @@
 /// @brief Simple vertices, and a merge that moves a zero set without changing its topology:
 /// analytic signed distances on a uniform Kuhn mesh, judged by the extracted surface's genus
 /// and the components of the sign sets.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/kuhn_bisection.h"
+#include "fit/merge_without_joins.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/outside_flood_fill.h"
-#include "lsrecon/core/surface_topology.h"
-#include "lsrecon/core/merge_without_joins.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/kuhn_bisection.h"
+#include "start/outside_flood_fill.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 /// @brief Test helpers: conformity and shape checks of simplicial meshes of the unit box.
 #pragma once
 
-#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/simplex_geometry.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <algorithm>
 #include <cmath>

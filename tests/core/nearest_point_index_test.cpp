@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file nearest_point_index_test.cpp
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/nearest_point_index.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file outside_flood_fill_test.cpp
 /// @brief Components of vertex subsets and the flood from the box walls.
-#include "lsrecon/core/kuhn_bisection.h"
-#include "lsrecon/core/outside_flood_fill.h"
+#include "mesh/kuhn_bisection.h"
+#include "start/outside_flood_fill.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 /// @file p1_operators_test.cpp
 /// @brief The nodal operators on analytic functions: exact gradients of linear functions, the
 /// symmetric identity of appendix C, and convergence of the discrete curvature.
-#include "lsrecon/core/adaptive_refinement.h"
+#include "evolution/p1_operators.h"
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/p1_operators.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file point_location_test.cpp
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/point_location.h"
+#include "mesh/point_location.h"
 
 #include <gtest/gtest.h>
 

@@ -3,9 +3,9 @@
 /// @brief The blended quadric fit is exact on planes and quadrics of the tangent frame, and its
 /// error on a sphere is the next term of the height function, r^4 / (8 R^3); it does not
 /// round a crease over the whole neighbourhood.
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/quadric_implicit.h"
+#include "fit/quadric_implicit.h"
 #include "lsrecon/testdata/shape_corpus.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 

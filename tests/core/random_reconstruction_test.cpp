@@ -10,7 +10,7 @@
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/testdata/surface_distance.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -47,7 +47,7 @@ Outcome run(const TestShape& shape, const SampledShape& sample, const Reconstruc
   o.genus = o.topology.genus;
   std::sort(o.genus.begin(), o.genus.end());
   // Genuine samples are never isolated: on a surface the nearest neighbour is within a spacing.
-  if (options.outlier_factor > 0.0) {
+  if (options.sampling.outlier_factor > 0.0) {
     EXPECT_EQ(o.r.outlier_points, 0u);
   }
   return o;
@@ -141,11 +141,11 @@ TEST(RandomReconstruction, StoppingAStillFrontSavesStepsOnACreasedShape) {
   const TestShape shape = make_test_shape("double-torus");
   const SampledShape sample = sample_test_shape(shape, 5000);
   ReconstructionOptions patient;
-  patient.stall_stillness = 0.0;
+  patient.stopping.stall_stillness = 0.0;
   const Outcome waited = run(shape, sample, patient);
   ReconstructionOptions o;
   const Outcome still = run(shape, sample, o);
-  o.stop_when_few_unreached = true;
+  o.stopping.stop_when_few_unreached = true;
   const Outcome early = run(shape, sample, o);
   EXPECT_EQ(waited.r.status, ReconstructionStatus::converged);
   EXPECT_LE(waited.distances.chamfer, 0.25 * waited.r.spacing);
@@ -166,7 +166,7 @@ TEST(RandomReconstruction, StartingCloserToTheDataSavesStepsNotAccuracy) {
   const TestShape shape = make_test_shape("torus");
   const SampledShape sample = sample_test_shape(shape, 4000);
   ReconstructionOptions at_flood;
-  at_flood.start_offset = 0.0;
+  at_flood.start.start_offset = 0.0;
   const Outcome far = run(shape, sample, at_flood);
   const Outcome near = run(shape, sample);
   for (const Outcome* x : {&far, &near}) {
@@ -196,7 +196,7 @@ TEST(RandomReconstruction, IsolatedOutliersAreLeftOutNotWrapped) {
     EXPECT_FALSE(r.point_normals[i].allFinite()) << i;
   }
   ReconstructionOptions keep;
-  keep.outlier_factor = 0.0;
+  keep.sampling.outlier_factor = 0.0;
   const auto kept = reconstruct<3>(points, keep);
   EXPECT_EQ(kept.outlier_points, 0u);
   EXPECT_EQ(analyze_surface(kept.surface.vertices, kept.surface.facets).genus, std::vector<int>{1});
@@ -213,7 +213,7 @@ TEST(RandomReconstruction, HolesAreSpannedByDefault) {
   v.hole_radius = 0.2 / 4.04;  // of the diagonal, 2 sqrt(1.4^2 + 1.4^2 + 0.4^2)
   const SampledShape sample = sample_test_shape(shape, 4000, v);
   ReconstructionOptions off;
-  off.hole_radius = 0.0;
+  off.sampling.hole_radius = 0.0;
   const Outcome open = run(shape, sample, off);
   EXPECT_FALSE(open.topology.watertight && open.genus == std::vector<int>{1});
   const Outcome spanned = run(shape, sample);
@@ -289,7 +289,7 @@ TEST(RandomReconstruction, AThinPartOpenedAtItsEndIsClosedNotEntered) {
   // box radius of 0.4: 0.019) are left open: the flood stays inside, the front hugs the data
   // from both sides.
   ReconstructionOptions narrow;
-  narrow.hole_radius = 0.01;
+  narrow.sampling.hole_radius = 0.01;
   const Outcome open = run(shape, sample, narrow);
   EXPECT_EQ(open.r.sealed_cavities, 0);
   EXPECT_FALSE(open.genus == std::vector<int>{0} && open.distances.normal_consistency > 0.9);

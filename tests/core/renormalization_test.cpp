@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file renormalization_test.cpp
-#include "lsrecon/core/adaptive_refinement.h"
+#include "evolution/renormalization.h"
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/renormalization.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 /// @file residual_noise_test.cpp
 /// @brief The residual noise reads the noise of a flat sheet, and not the bend of a clean,
 /// tightly curved sphere, which PCA's thickness counts as noise.
-#include "lsrecon/core/residual_noise.h"
+#include "sampling/residual_noise.h"
 
-#include "lsrecon/core/local_sampling.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 

@@ -4,10 +4,10 @@
 /// before, from cold and from warm starts.
 #include "lsrecon/core/resolution_hierarchy.h"
 
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

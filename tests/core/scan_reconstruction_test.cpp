@@ -4,8 +4,8 @@
 /// dense lines with wide gaps between them, range noise and misregistered views, from all sides
 /// and from above only (the underside unseen, closed by the front).
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/surface_topology.h"
 #include "lsrecon/testdata/simulated_scan.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 /// @file semi_implicit_step_test.cpp
 /// @brief The SPD/CG step against the paper's unsymmetric form with GMRES, and its basic
 /// properties.
-#include "lsrecon/core/adaptive_refinement.h"
+#include "evolution/semi_implicit_step.h"
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/semi_implicit_step.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 /// @file sheet_gaps_test.cpp
 /// @brief A gap between two facing sheets is found; the inside of a thin slab, a hole in one
 /// sheet and a sheet's own noise band are not gaps.
-#include "lsrecon/core/sheet_gaps.h"
+#include "fit/sheet_gaps.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file simplex_geometry_test.cpp
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/simplex_geometry.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 /// error, on a sphere where all of it is exact.
 #include "lsrecon/testdata/simulated_scan.h"
 
-#include "lsrecon/core/nearest_point_index.h"
+#include "geometry/nearest_point_index.h"
 
 #include <gtest/gtest.h>
 

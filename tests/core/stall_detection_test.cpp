@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file stall_detection_test.cpp
-#include "lsrecon/core/stall_detection.h"
+#include "evolution/stall_detection.h"
 
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/kuhn_bisection.h"
-#include "lsrecon/core/p1_operators.h"
+#include "evolution/p1_operators.h"
 #include "lsrecon/core/simplex_geometry.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/kuhn_bisection.h"
 
 #include <gtest/gtest.h>
 

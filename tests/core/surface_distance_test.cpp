@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file surface_distance_test.cpp
 /// @brief The comparison metrics against an independent analytic check.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/level_set_extraction.h"
+#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/surface_distance.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

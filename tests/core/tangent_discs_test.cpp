@@ -2,8 +2,8 @@
 /// @file tangent_discs_test.cpp
 /// @brief The discs span a hole, follow a curved surface across it, and leave the gap between
 /// two close sheets open.
-#include "lsrecon/core/tangent_discs.h"
 #include "lsrecon/testdata/shape_corpus.h"
+#include "start/tangent_discs.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 /// the one-sided term alone cannot.
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/shape_corpus.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
@@ -32,14 +32,14 @@ TEST(TwoSidedAttraction, AStartAcrossACircleConvergesOntoIt) {
   // Figure 8: a start partly inside, partly outside the data.
   const SignedDistance<2> start = [](const Vec<2>& p) { return (p - Vec<2>(0.5, 0.0)).norm() - 1.0; };
   ReconstructionOptions o;
-  o.two_sided = true;
+  o.evolution.two_sided = true;
   const ReconstructionResult<2> r = reconstruct_from<2>(points, start, o);
   ASSERT_EQ(r.status, ReconstructionStatus::converged);
   ASSERT_EQ(r.loops.size(), 1u);
   for (const auto& v : r.surface.vertices) EXPECT_LE(std::abs(v.norm() - 1.0), r.tolerance);
   // One-sided, the part inside the circle is pushed further in: the run cannot converge.
-  o.two_sided = false;
-  o.alpha = 2.0;
+  o.evolution.two_sided = false;
+  o.evolution.alpha = 2.0;
   EXPECT_NE(reconstruct_from<2>(points, start, o).status, ReconstructionStatus::converged);
 }
 
@@ -49,7 +49,7 @@ TEST(TwoSidedAttraction, ASphereThroughATorusBecomesTheTorus) {
   // Through the outer half of the tube: the ball holds the hole and the inner half of the tube.
   const SignedDistance<3> start = [](const Vec<3>& p) { return p.norm() - 1.2; };
   ReconstructionOptions o;
-  o.two_sided = true;
+  o.evolution.two_sided = true;
   const ReconstructionResult<3> r = reconstruct_from<3>(points, start, o);
   ASSERT_EQ(r.status, ReconstructionStatus::converged);
   const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file unit_box_transform_test.cpp
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/unit_box_transform.h"
+#include "sampling/unit_box_transform.h"
 
 #include <gtest/gtest.h>
 

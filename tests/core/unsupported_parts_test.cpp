@@ -2,11 +2,11 @@
 /// @file unsupported_parts_test.cpp
 /// @brief Parts of a level set that no sample is nearest to go, the others stay: analytic
 /// balls and shells on a uniform Kuhn mesh, samples on some of their spheres only.
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/kuhn_bisection.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/outside_flood_fill.h"
-#include "lsrecon/core/unsupported_parts.h"
+#include "mesh/adaptive_refinement.h"
+#include "mesh/kuhn_bisection.h"
+#include "start/outside_flood_fill.h"
+#include "surface/unsupported_parts.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 /// @file vertex_leaf_lists_test.cpp
 /// @brief VertexLeafLists keeps each vertex's leaves in the order a std::vector with push_back
 /// and swap-with-last erase would, in its slots and after a list outgrows them.
-#include "lsrecon/core/vertex_leaf_lists.h"
+#include "mesh/vertex_leaf_lists.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file z_order_test.cpp
 /// @brief Morton keys interleave the coordinates' bits, first coordinate leading; z_order sorts by them.
-#include "lsrecon/core/z_order.h"
+#include "sampling/z_order.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/testdata/analytic_shapes.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

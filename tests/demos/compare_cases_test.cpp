@@ -4,7 +4,7 @@
 #include "compare_cases.h"
 
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,9 @@
 #include "cli_fixture.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
-#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/level_set_reconstruction.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -292,16 +292,16 @@ TEST_F(Cli, HelpShowsTheLibraryDefaults) {
     s << option << " (=" << value << ")";
     EXPECT_NE(help.output.find(s.str()), std::string::npos) << s.str() << " in\n" << help.output;
   };
-  shown("--max-iterations N", o.max_iterations);
-  shown("--max-size H", o.h_max);
-  shown("--grading C", o.grading);
-  shown("--curvature-weight B", o.curvature_weight);
-  shown("--max-resolution R", o.max_resolution);
-  shown("--tolerance EPS", o.tolerance);
+  shown("--max-iterations N", o.stopping.max_iterations);
+  shown("--max-size H", o.mesh.h_max);
+  shown("--grading C", o.mesh.grading);
+  shown("--curvature-weight B", o.evolution.curvature_weight);
+  shown("--max-resolution R", o.mesh.max_resolution);
+  shown("--tolerance EPS", o.stopping.tolerance);
   EXPECT_NE(help.output.find("--init START (=tagged)"), std::string::npos);
-  ASSERT_EQ(o.initial_front, lsr::InitialFront::tagged);
+  ASSERT_EQ(o.start.initial_front, lsr::InitialFront::tagged);
   std::ostringstream outliers;
-  outliers << "farther than " << o.outlier_factor << " local";
+  outliers << "farther than " << o.sampling.outlier_factor << " local";
   EXPECT_NE(help.output.find(outliers.str()), std::string::npos);
 }
 

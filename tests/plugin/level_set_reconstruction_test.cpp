@@ -2,10 +2,10 @@
 /// @file level_set_reconstruction_test.cpp
 /// @brief pcl::LevelSetReconstruction used exactly like pcl::Poisson.
 #include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/pcl/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
-#include "lsrecon/core/surface_topology.h"
-#include "lsrecon/pcl/level_set_reconstruction.h"
+#include "surface/surface_topology.h"
 
 #include <pcl/point_types.h>
 

@@ -2,7 +2,7 @@
 /// @file drives.cpp
 #include "evolution/drives.h"
 
-#include "lsrecon/core/tangent_discs.h"
+#include "start/tangent_discs.h"
 
 #include <algorithm>
 

@@ -4,11 +4,11 @@
 /// data, and the two-sided convection towards it.
 #pragma once
 
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/nearest_point_index.h"
-#include "lsrecon/core/p1_operators.h"
+#include "evolution/p1_operators.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/simplex_geometry.h"
 #include "lsrecon/core/types.h"
+#include "sampling/local_sampling.h"
 
 #include <Eigen/Core>
 

@@ -7,8 +7,8 @@
 
 #include "evolution/front_evolution.h"
 
+#include "evolution/semi_implicit_step.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/semi_implicit_step.h"
 
 #include <Eigen/Core>
 

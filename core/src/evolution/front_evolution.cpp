@@ -5,8 +5,8 @@
 #include "evolution/drives.h"
 #include "evolution/stopping_test.h"
 
+#include "evolution/renormalization.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/renormalization.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,14 +40,14 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
     // loop's peak) and freed before the fit.
     SemiImplicitStepper<D> stepper(p_.ops);
     Eigen::VectorXd before;
-    for (int n = 1; n <= o.max_iterations; ++n) {
+    for (int n = 1; n <= o.stopping.max_iterations; ++n) {
       progress.update("solve", progress_fraction);
       SolverReport solve;
       before = u;
-      if (o.two_sided) {
+      if (o.evolution.two_sided) {
         stepper.advance(two_sided_drive(p_.ops, d, p_.away_from_data, u), u, step_, &solve);
       } else if (schedule_.rest_past_data) {
-        const Eigen::VectorXd gap = o.gap_factor * p_.scale;
+        const Eigen::VectorXd gap = o.sampling.gap_factor * p_.scale;
         stepper.advance(drive_resting_past_data(p_.ops, d, p_.away_from_data, u, p_.dist, gap, p_.near_hole, step_.alpha), u,
                         step_, &solve);
       } else {
@@ -56,14 +56,14 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
       const double displacement = front_displacement(before, u, p_.ops.ball_measure, p_.scale, D, front_area);
       r.solver_iterations += solve.iterations;
       clock.end("solve");
-      if (o.pin_reached_data && !o.two_sided) pin_reached_data(p_.at, p_.cells, u, step_.alpha, p_.reach, pinned, d, held);
+      if (o.evolution.pin_reached_data && !o.evolution.two_sided) pin_reached_data(p_.at, p_.cells, u, step_.alpha, p_.reach, pinned, d, held);
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on. Not near spanned holes: a
         // front that crept past a hole's rim is the fit's to correct (attach_fit), and held 4
         // of 80 holey draws "not converged" (measured).
         stepper.release();  // the renormalisation is the loop's memory peak
-        const RenormalizationReport<D> renormalized = renormalize(p_.mesh, p_.neighbours, u, schedule_.band, o.threads);
+        const RenormalizationReport<D> renormalized = renormalize(p_.mesh, p_.neighbours, u, schedule_.band, o.limits.threads);
         front_distance = max_front_distance(renormalized.front, d, p_.front_tolerance, p_.near_hole);
         front_area = front_measure(renormalized.front);
         clock.end("renormalize");
@@ -93,8 +93,8 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
       clock.end("stopping test");
       // Within tolerance; or, if asked, as good as a stall would leave it (below) without
       // waiting for the stall.
-      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.unreached_fraction * double(p_.at.size());
-      if (best_residual_ <= 1.0 || (o.stop_when_few_unreached && r.best_iteration == n && few_unreached)) {
+      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.stopping.unreached_fraction * double(p_.at.size());
+      if (best_residual_ <= 1.0 || (o.stopping.stop_when_few_unreached && r.best_iteration == n && few_unreached)) {
         r.status = ReconstructionStatus::converged;
         break;
       }

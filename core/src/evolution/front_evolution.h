@@ -7,13 +7,13 @@
 #include "evolution/pinning.h"
 #include "stage_clock.h"
 
+#include "evolution/p1_operators.h"
+#include "evolution/semi_implicit_step.h"
+#include "evolution/stall_detection.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/p1_operators.h"
-#include "lsrecon/core/point_location.h"
 #include "lsrecon/core/progress.h"
-#include "lsrecon/core/semi_implicit_step.h"
 #include "lsrecon/core/simplex_geometry.h"
-#include "lsrecon/core/stall_detection.h"
+#include "mesh/point_location.h"
 
 #include <Eigen/Core>
 

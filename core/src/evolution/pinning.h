@@ -3,8 +3,8 @@
 /// @brief Data points the front has reached hold their cells still.
 #pragma once
 
-#include "lsrecon/core/point_location.h"
 #include "lsrecon/core/types.h"
+#include "mesh/point_location.h"
 
 #include <Eigen/Core>
 

@@ -5,8 +5,8 @@
 #pragma once
 
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/point_location.h"
 #include "lsrecon/core/types.h"
+#include "mesh/point_location.h"
 
 #include <Eigen/Core>
 

@@ -4,9 +4,9 @@
 
 #include "surface/closed_surface.h"
 
-#include "lsrecon/core/merge_without_joins.h"
-#include "lsrecon/core/residual_noise.h"
-#include "lsrecon/core/sheet_gaps.h"
+#include "fit/merge_without_joins.h"
+#include "fit/sheet_gaps.h"
+#include "sampling/residual_noise.h"
 
 #include <algorithm>
 

@@ -4,9 +4,9 @@
 /// the front decided.
 #pragma once
 
+#include "fit/quadric_implicit.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/nearest_point_index.h"
-#include "lsrecon/core/quadric_implicit.h"
 #include "lsrecon/core/simplex_geometry.h"
 
 #include <Eigen/Core>

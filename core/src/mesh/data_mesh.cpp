@@ -12,13 +12,13 @@ template <int D>
 AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
                           Index max_vertices, const Progress& progress, double& h_min) {
   AdaptiveMeshOptions mo;
-  mo.point_size = local_mesh_sizes<D>(point_scale, o.h_min, o.max_resolution);
+  mo.point_size = local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution);
   for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);
   mo.h_min = *std::min_element(mo.point_size.begin(), mo.point_size.end());
-  mo.h_max = std::max(o.h_max, mo.h_min);
-  mo.grading = o.grading;
+  mo.h_max = std::max(o.mesh.h_max, mo.h_min);
+  mo.grading = o.mesh.grading;
   mo.max_vertices = max_vertices;
-  mo.threads = o.threads;
+  mo.threads = o.limits.threads;
   h_min = mo.h_min;
   return build_adaptive_mesh(data, mo, progress);
 }

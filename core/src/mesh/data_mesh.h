@@ -4,9 +4,9 @@
 /// scale within the resolution limits, coarse away from it.
 #pragma once
 
-#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/progress.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <vector>
 

@@ -5,8 +5,8 @@
 /// reserved for the passes left (internal to adaptive_refinement.cpp).
 #pragma once
 
-#include "lsrecon/core/adaptive_refinement.h"
 #include "lsrecon/core/errors.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,10 +4,10 @@
 /// local scale and noise, the direction away from it.
 #pragma once
 
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/nearest_point_index.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/types.h"
+#include "mesh/adaptive_refinement.h"
+#include "sampling/local_sampling.h"
 
 #include <Eigen/Core>
 

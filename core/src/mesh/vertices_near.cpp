@@ -2,7 +2,7 @@
 /// @file vertices_near.cpp
 #include "mesh/vertices_near.h"
 
-#include "lsrecon/core/nearest_point_index.h"
+#include "geometry/nearest_point_index.h"
 
 namespace lsr::detail {
 

@@ -3,9 +3,10 @@
 #include "sampling/data_preparation.h"
 
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/exact_duplicates.h"
-#include "lsrecon/core/point_validation.h"
-#include "lsrecon/core/z_order.h"
+#include "lsrecon/core/reconstruction_options.h"
+#include "sampling/exact_duplicates.h"
+#include "sampling/point_validation.h"
+#include "sampling/z_order.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -79,8 +80,8 @@ std::vector<double> local_scales(const LocalSampling<D>& s) {
 
 template <int D>
 std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fixed, double max_resolution) {
-  const double lo = 1.0 / (max_resolution > 0.0 ? max_resolution : D == 2 ? 4096.0 : 256.0);
-  const double hi = std::max(lo, D == 2 ? 1.0 / 64 : 1.0 / 32);
+  const double lo = 1.0 / (max_resolution > 0.0 ? max_resolution : automatic_defaults(D).max_resolution);
+  const double hi = std::max(lo, automatic_defaults(D).coarsest_finest_size);
   std::vector<double> h(scale.size());
   for (std::size_t i = 0; i < h.size(); ++i) h[i] = fixed > 0.0 ? fixed : std::clamp(scale[i], lo, hi);
   return h;

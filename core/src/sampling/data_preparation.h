@@ -4,9 +4,9 @@
 /// along a Z-order curve, and the local scale of every point.
 #pragma once
 
-#include "lsrecon/core/local_sampling.h"
 #include "lsrecon/core/types.h"
-#include "lsrecon/core/unit_box_transform.h"
+#include "sampling/local_sampling.h"
+#include "sampling/unit_box_transform.h"
 
 #include <vector>
 

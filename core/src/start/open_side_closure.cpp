@@ -2,11 +2,11 @@
 /// @file open_side_closure.cpp
 #include "start/open_side_closure.h"
 
-#include "lsrecon/core/outside_flood_fill.h"
 #include "mesh/vertices_near.h"
+#include "start/outside_flood_fill.h"
 #include "start/winding_number.h"
 
-#include "lsrecon/core/local_sampling.h"
+#include "sampling/local_sampling.h"
 
 #include <omp.h>
 

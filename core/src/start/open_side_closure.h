@@ -14,7 +14,7 @@
 /// measurements: docs/how-it-works.md (Open sides).
 #pragma once
 
-#include "lsrecon/core/nearest_point_index.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/simplex_geometry.h"
 #include "lsrecon/core/types.h"
 

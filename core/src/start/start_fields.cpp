@@ -5,9 +5,9 @@
 #include "mesh/vertices_near.h"
 #include "start/open_side_closure.h"
 
+#include "evolution/renormalization.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/outside_flood_fill.h"
-#include "lsrecon/core/renormalization.h"
+#include "start/outside_flood_fill.h"
 
 #include <omp.h>
 
@@ -93,7 +93,7 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
   const std::size_t nv = mesh.vertices.size();
   u.resize(Eigen::Index(nv));
   if (custom_start) {
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(o.limits.threads > 0 ? o.limits.threads : omp_get_max_threads())
     for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nv); ++i) {
       try {  // an exception must not leave an OpenMP region: NaN, refused just below
         u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();
@@ -105,25 +105,25 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
       throw InvalidInput("the initial function has no zero set inside the box around the data, or is not finite",
                          "pass a signed distance that is negative inside a closed curve / surface near the data");
     }
-  } else if (o.initial_front == InitialFront::tagged) {
+  } else if (o.start.initial_front == InitialFront::tagged) {
     const std::vector<double> guard =
-        hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.gap_factor * scale).array() + hole_radius).matrix())
+        hole_radius > 0.0 ? half_longest_edges(mesh, neighbours, dist, ((o.sampling.gap_factor * scale).array() + hole_radius).matrix())
                             : std::vector<double>();
     SealedCavities sealed;
     OpenSides closed;
-    u = tagged_start(mesh, neighbours, attraction, distance, scale, guard, o.gap_factor, band, hole_radius, sealed,
-                     open, closed, o.threads);
+    u = tagged_start(mesh, neighbours, attraction, distance, scale, guard, o.sampling.gap_factor, band, hole_radius, sealed,
+                     open, closed, o.limits.threads);
     s.open_side_points = closed.two_sided_points;
     s.held = std::move(closed.held);
     s.kept = std::move(closed.kept);
     s.sealed_cavities = sealed.count;
-    if (sealed.count > 0) s.near_opening = near_any(mesh.vertices, sealed.mouth, hole_radius, o.threads);
+    if (sealed.count > 0) s.near_opening = near_any(mesh.vertices, sealed.mouth, hole_radius, o.limits.threads);
     s.tagged = u.size() > 0;
     const bool has_rims = std::find(sampling.rim.begin(), sampling.rim.end(), 1) != sampling.rim.end();
-    if (D == 3 && s.tagged && !has_rims) u += o.start_offset * scale;
+    if (D == 3 && s.tagged && !has_rims) u += o.start.start_offset * scale;
     if (!s.tagged) u = initial_field(mesh, data, InitialFront::enclosing, h_min);
   } else {
-    u = initial_field(mesh, data, o.initial_front, h_min);
+    u = initial_field(mesh, data, o.start.initial_front, h_min);
   }
   return s;
 }

@@ -4,13 +4,13 @@
 /// start that hugs the data from outside (a flood from the box walls).
 #pragma once
 
-#include "lsrecon/core/cavity_sealing.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/nearest_point_index.h"
-#include "start/open_side_closure.h"
 #include "lsrecon/core/simplex_geometry.h"
-#include "lsrecon/core/unit_box_transform.h"
+#include "sampling/local_sampling.h"
+#include "sampling/unit_box_transform.h"
+#include "start/cavity_sealing.h"
+#include "start/open_side_closure.h"
 
 #include <Eigen/Core>
 
@@ -78,7 +78,7 @@ struct StartField {
 /// @brief u0: the caller's `custom_start` (input coordinates; `box` maps the unit box to them)
 /// if given; else the tagged start pulled `start_offset` nearer the data where no hole is
 /// spanned, or the enclosing sphere if nothing is reachable from the walls; else the circle /
-/// sphere of options.initial_front.
+/// sphere of options.start.initial_front.
 /// @throw InvalidInput if the caller's function has no zero set in the box or is not finite.
 template <int D>
 StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,

@@ -3,7 +3,7 @@
 #include "surface/closed_surface.h"
 
 #include "lsrecon/core/level_set_volume_mesh.h"
-#include "lsrecon/core/unsupported_parts.h"
+#include "surface/unsupported_parts.h"
 
 namespace lsr::detail {
 

@@ -4,12 +4,12 @@
 /// inside / outside meshes and normals.
 #pragma once
 
+#include "evolution/p1_operators.h"
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/local_sampling.h"
-#include "lsrecon/core/outside_flood_fill.h"
-#include "lsrecon/core/p1_operators.h"
-#include "lsrecon/core/point_location.h"
 #include "lsrecon/core/simplex_geometry.h"
+#include "mesh/point_location.h"
+#include "sampling/local_sampling.h"
+#include "start/outside_flood_fill.h"
 
 #include <Eigen/Core>
 

@@ -4,8 +4,8 @@
 /// parts that data support.
 #include "surface/closed_surface.h"
 
-#include "lsrecon/core/kuhn_bisection.h"
-#include "lsrecon/core/surface_topology.h"
+#include "mesh/kuhn_bisection.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

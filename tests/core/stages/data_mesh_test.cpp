@@ -18,7 +18,7 @@ TEST(DataMesh, AResolutionCapRaisesThePointsScalesToTheMeshSize) {
   const NearestPointIndex<3> data(Sphere{Vec<3>(0.5, 0.5, 0.5), 0.3}.sample(4000));
   std::vector<double> scale(data.points().size(), 0.001);  // finer than any cap
   ReconstructionOptions o;
-  o.max_resolution = 64;
+  o.mesh.max_resolution = 64;
   double h_min = 0.0;
   const AdaptiveMesh<3> m = data_mesh(data, scale, o, 1 << 30, Progress(), h_min);
   EXPECT_EQ(h_min, 1.0 / 64);

@@ -19,7 +19,7 @@ TEST(EvolutionSettings, AutomaticDefaultsFollowAlphaAndTheScales) {
   EXPECT_DOUBLE_EQ(s.step.time_step, 0.1);  // 0.2 / |alpha|
   EXPECT_EQ(s.schedule.interval, 2);         // |alpha| dt k <= 0.4
   // beta = |alpha| l^2 (c + 2 min(noise / l, 1)) per vertex: no noise, half a scale, past it.
-  const double c = o.curvature_factor;
+  const double c = o.evolution.curvature_factor;
   EXPECT_NEAR(s.step.curvature_weights[0], 2.0 * 1e-4 * c, 1e-18);
   EXPECT_NEAR(s.step.curvature_weights[1], 2.0 * 1e-4 * (c + 1.0), 1e-18);
   EXPECT_NEAR(s.step.curvature_weights[2], 2.0 * 1e-4 * (c + 2.0), 1e-18);
@@ -27,9 +27,9 @@ TEST(EvolutionSettings, AutomaticDefaultsFollowAlphaAndTheScales) {
   EXPECT_EQ(s.eps, (std::vector<double>{0.01, 0.02, 0.03}));
   EXPECT_EQ(s.reach, (std::vector<double>{0.005, 0.01, 0.015}));
   EXPECT_EQ(s.median_eps, 0.02);
-  EXPECT_DOUBLE_EQ(s.front_tolerance[0], (o.tolerance_factor + o.gap_factor) * 0.01);
+  EXPECT_DOUBLE_EQ(s.front_tolerance[0], (o.stopping.tolerance_factor + o.sampling.gap_factor) * 0.01);
   // The tagged start's band; the sphere starts cross the box: everywhere.
-  EXPECT_DOUBLE_EQ(s.schedule.band, (4.0 + o.gap_factor) * 0.01);
+  EXPECT_DOUBLE_EQ(s.schedule.band, (4.0 + o.sampling.gap_factor) * 0.01);
   EXPECT_TRUE(std::isinf(resolve_evolution_settings(o, scale, noise, point_scale, 0.01, true).schedule.band));
   // The stall rule's "near": one free step, exp(|alpha| dt).
   EXPECT_DOUBLE_EQ(s.schedule.stall.near, std::exp(0.2));
@@ -37,11 +37,11 @@ TEST(EvolutionSettings, AutomaticDefaultsFollowAlphaAndTheScales) {
 
 TEST(EvolutionSettings, WhatIsGivenIsKept) {
   ReconstructionOptions o;
-  o.initial_front = InitialFront::inside;
-  o.time_step = 0.05;
-  o.curvature_weight = 0.3;
-  o.tolerance = 0.004;
-  o.renormalization_interval = 1;
+  o.start.initial_front = InitialFront::inside;
+  o.evolution.time_step = 0.05;
+  o.evolution.curvature_weight = 0.3;
+  o.stopping.tolerance = 0.004;
+  o.evolution.renormalization_interval = 1;
   const Eigen::VectorXd scale = Eigen::VectorXd::Constant(2, 0.01), noise = Eigen::VectorXd::Zero(2);
   const EvolutionSettings s = resolve_evolution_settings(o, scale, noise, {0.01, 0.01}, 0.01, true);
   EXPECT_EQ(s.step.alpha, -2.0);  // grows from inside

@@ -4,8 +4,8 @@
 /// put points near the surface onto it, to the quadrics' order.
 #include "fit/fitted_surface.h"
 
-#include "lsrecon/core/local_sampling.h"
 #include "lsrecon/testdata/analytic_shapes.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 

@@ -7,10 +7,10 @@
 #include "evolution/front_evolution.h"
 #include "start/start_fields.h"
 
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/local_sampling.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ struct Loop {
     scale = Eigen::VectorXd::Constant(distance.size(), l);
     noise = Eigen::VectorXd::Zero(distance.size());
     at = locate_all(adaptive, data.points(), 1);
-    cells = pin_cells(scale, data.points().size(), dist, nearest, o.pin_factor);
+    cells = pin_cells(scale, data.points().size(), dist, nearest, o.evolution.pin_factor);
     settings = resolve_evolution_settings(o, scale, noise, std::vector<double>(data.points().size(), l), l, false);
     u0 = start_field<2>(adaptive.mesh, neighbours, data, sampling, distance, distance, dist, scale, o, 0.0, settings.schedule.band,
                      1.0 / 256, nullptr, UnitBoxTransform<2>::fit_ball(data.points(), kDataRadius)).u;
@@ -79,7 +79,7 @@ TEST(FrontEvolution, ConvergesFromTheTaggedStartInThePredictedSteps) {
   EXPECT_EQ(r.best_iteration, r.iterations);
   // The start lies gap_factor + 1/2... scales out; the gap closes by exp(-|alpha| dt) a step:
   // ln(d0 / eps) / (alpha dt) steps, d0 <= (gap_factor + 1) l, eps = l.
-  const double predicted = std::log(l.o.gap_factor + 1.0) / (std::abs(l.settings.step.alpha) * l.settings.step.time_step);
+  const double predicted = std::log(l.o.sampling.gap_factor + 1.0) / (std::abs(l.settings.step.alpha) * l.settings.step.time_step);
   EXPECT_LE(r.iterations, int(std::ceil(predicted)) + 2 * l.settings.schedule.interval);
   EXPECT_EQ(r.residual_history.size(), std::size_t(r.iterations));
   EXPECT_EQ(stages, (std::vector<std::string>{"solve", "stopping test", "renormalize"}));
@@ -90,7 +90,7 @@ TEST(FrontEvolution, ConvergesFromTheTaggedStartInThePredictedSteps) {
 TEST(FrontEvolution, StopsAtMaxIterationsOrWhenCancelledWithItsBestIterate) {
   Loop l;
   // Two steps: the front side is first measured at the renormalisation of step 2.
-  l.o.max_iterations = 2;
+  l.o.stopping.max_iterations = 2;
   const FrontProblem<2> p = l.problem();
   std::map<std::string, double> seconds;
   std::vector<std::string> stages;
@@ -105,7 +105,7 @@ TEST(FrontEvolution, StopsAtMaxIterationsOrWhenCancelledWithItsBestIterate) {
     EXPECT_EQ(r.best_iteration, 2);
     EXPECT_TRUE(std::isinf(r.residual_history[0]));
   }
-  l.o.max_iterations = 1000;
+  l.o.stopping.max_iterations = 1000;
   FrontEvolution<2> e(p, l.o, l.settings.schedule, l.settings.step);
   ReconstructionResult<2> r;
   Eigen::VectorXd d = l.distance;

@@ -5,7 +5,7 @@
 #include "start/winding_number.h"
 
 #include "lsrecon/core/level_set_reconstruction.h"
-#include "lsrecon/core/surface_topology.h"
+#include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 

@@ -19,13 +19,13 @@ namespace {
 TEST(OptionChecks, EachOptionOutOfRangeIsRefusedWithAHint) {
   EXPECT_NO_THROW(check_options(ReconstructionOptions{}));
   const std::vector<std::function<void(ReconstructionOptions&)>> bad = {
-      [](auto& o) { o.h_min = 1.0; },           [](auto& o) { o.max_resolution = 2.0; },
-      [](auto& o) { o.alpha = NAN; },           [](auto& o) { o.time_step = -1.0; },
-      [](auto& o) { o.tolerance = 1.0; },       [](auto& o) { o.gap_factor = 0.0; },
-      [](auto& o) { o.max_iterations = 0; },    [](auto& o) { o.renormalization_interval = -1; },
-      [](auto& o) { o.renormalization_interval = o.patience + 1; },
-      [](auto& o) { o.outlier_factor = 0.5; },  [](auto& o) { o.max_memory = -1.0; },
-      [](auto& o) { o.alpha = -2.0; },  // an enclosing start with alpha < 0
+      [](auto& o) { o.mesh.h_min = 1.0; },           [](auto& o) { o.mesh.max_resolution = 2.0; },
+      [](auto& o) { o.evolution.alpha = NAN; },           [](auto& o) { o.evolution.time_step = -1.0; },
+      [](auto& o) { o.stopping.tolerance = 1.0; },       [](auto& o) { o.sampling.gap_factor = 0.0; },
+      [](auto& o) { o.stopping.max_iterations = 0; },    [](auto& o) { o.evolution.renormalization_interval = -1; },
+      [](auto& o) { o.evolution.renormalization_interval = o.stopping.patience + 1; },
+      [](auto& o) { o.sampling.outlier_factor = 0.5; },  [](auto& o) { o.limits.max_memory = -1.0; },
+      [](auto& o) { o.evolution.alpha = -2.0; },  // an enclosing start with alpha < 0
   };
   for (std::size_t i = 0; i < bad.size(); ++i) {
     ReconstructionOptions o;
@@ -41,7 +41,7 @@ TEST(OptionChecks, EachOptionOutOfRangeIsRefusedWithAHint) {
 
 TEST(MemoryBudget, TheVerticesThatFitBesideThePoints) {
   ReconstructionOptions o;
-  o.max_memory = 1e9;
+  o.limits.max_memory = 1e9;
   // (budget - 1 KB per point) / 1.3 KB per 3D vertex.
   EXPECT_EQ(memory_limited_vertices<3>(o, 100000), Index((1e9 - 1e8) / 1300.0));
   EXPECT_EQ(memory_limited_vertices<2>(o, 100000), Index((1e9 - 1e8) / 2000.0));

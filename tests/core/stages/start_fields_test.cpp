@@ -4,10 +4,10 @@
 /// outside, the caller's function and its refusal.
 #include "start/start_fields.h"
 
-#include "lsrecon/core/adaptive_refinement.h"
-#include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/core/errors.h"
-#include "lsrecon/core/local_sampling.h"
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
+#include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 
@@ -48,7 +48,7 @@ TEST(StartFields, TheTaggedStartHugsTheDataAGapAway) {
   ASSERT_TRUE(s.tagged);
   // Negative inside the flood's boundary (which lies gap_factor scales outside the circle, up
   // to a mesh size), positive in the flood: u0 < 0 at the data and at the centre.
-  const double gap = o.gap_factor * c.scale[0], h = 1.0 / 256;
+  const double gap = o.sampling.gap_factor * c.scale[0], h = 1.0 / 256;
   for (std::size_t v = 0; v < c.adaptive.mesh.vertices.size(); ++v) {
     const double r = c.radius(v);
     if (r < 0.3 + gap - 2 * h) {
@@ -63,9 +63,9 @@ TEST(StartFields, TheTaggedStartHugsTheDataAGapAway) {
 TEST(StartFields, CirclesAroundOrInsideTheData) {
   const Circle2D c;
   ReconstructionOptions o;
-  o.initial_front = InitialFront::enclosing;
+  o.start.initial_front = InitialFront::enclosing;
   const StartField<2> around = c.start(o);
-  o.initial_front = InitialFront::inside;
+  o.start.initial_front = InitialFront::inside;
   const StartField<2> inside = c.start(o);
   EXPECT_FALSE(around.tagged);
   for (std::size_t v = 0; v < c.adaptive.mesh.vertices.size(); ++v) {

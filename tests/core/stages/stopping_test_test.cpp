@@ -5,9 +5,9 @@
 #include "evolution/pinning.h"
 #include "evolution/stopping_test.h"
 
-#include "lsrecon/core/adaptive_refinement.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_extraction.h"
-#include "lsrecon/core/nearest_point_index.h"
+#include "mesh/adaptive_refinement.h"
 
 #include <gtest/gtest.h>
 

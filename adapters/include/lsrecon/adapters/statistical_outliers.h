@@ -2,7 +2,7 @@
 /// @file statistical_outliers.h
 /// @brief pcl::StatisticalOutlierRemoval on core points, for scans with clusters of outliers.
 ///
-/// The core already leaves out isolated points (ReconstructionOptions::outlier_factor: nearest
+/// The core already leaves out isolated points (SamplingOptions::outlier_factor: nearest
 /// neighbour farther than a few local spacings). PCL's filter instead removes points whose mean
 /// distance to their k nearest neighbours exceeds the cloud's mean by stddev_mul standard
 /// deviations: it also catches small clusters of outliers, but on an i.i.d. random sample its

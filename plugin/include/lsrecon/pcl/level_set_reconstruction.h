@@ -70,17 +70,17 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   LevelSetReconstruction() { this->check_tree_ = false; }
 
   /// @brief Resolution 1/h_min in the unit box, the same everywhere near the data; 0 follows the
-  /// local sampling spacing and noise (lsr::ReconstructionOptions::h_min).
-  void setResolution(double resolution) { options_.h_min = resolution > 0 ? 1.0 / resolution : 0.0; }
-  double getResolution() const { return options_.h_min > 0 ? 1.0 / options_.h_min : 0.0; }
-  /// @brief Cap on the local resolution (lsr::ReconstructionOptions::max_resolution); finer
+  /// local sampling spacing and noise (lsr::MeshOptions::h_min).
+  void setResolution(double resolution) { options_.mesh.h_min = resolution > 0 ? 1.0 / resolution : 0.0; }
+  double getResolution() const { return options_.mesh.h_min > 0 ? 1.0 / options_.mesh.h_min : 0.0; }
+  /// @brief Cap on the local resolution (lsr::MeshOptions::max_resolution); finer
   /// costs time and memory and tells closer sheets apart.
-  void setMaximumResolution(double resolution) { options_.max_resolution = resolution; }
-  double getMaximumResolution() const { return options_.max_resolution; }
+  void setMaximumResolution(double resolution) { options_.mesh.max_resolution = resolution; }
+  double getMaximumResolution() const { return options_.mesh.max_resolution; }
   /// @brief Isolated points, whose nearest neighbour is farther than this many local spacings,
-  /// are left out; 0 keeps every point (lsr::ReconstructionOptions::outlier_factor).
-  void setOutlierFactor(double factor) { options_.outlier_factor = factor; }
-  double getOutlierFactor() const { return options_.outlier_factor; }
+  /// are left out; 0 keeps every point (lsr::SamplingOptions::outlier_factor).
+  void setOutlierFactor(double factor) { options_.sampling.outlier_factor = factor; }
+  double getOutlierFactor() const { return options_.sampling.outlier_factor; }
   /// @brief Run pcl::StatisticalOutlierRemoval (setMeanK(mean_k), setStddevMulThresh(stddev_mul))
   /// on the input first, for scans with clusters of outliers that the isolated-point rule above
   /// keeps; mean_k = 0 (the default) is off. Removed points get NaN input normals. Keep the
@@ -89,61 +89,62 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
   void setStatisticalOutlierFilter(int mean_k, double stddev_mul) { statistical_ = {mean_k, stddev_mul}; }
   const lsr::adapters::StatisticalOutlierFilter& getStatisticalOutlierFilter() const { return statistical_; }
   /// @brief Widest sampling hole spanned, in the unit box (the cloud's bounding ball has radius
-  /// 0.4); negative (the default): 0.06 in 3D, none in 2D; 0: none, the front enters through
-  /// holes (lsr::ReconstructionOptions::hole_radius).
-  void setHoleRadius(double radius) { options_.hole_radius = radius; }
-  double getHoleRadius() const { return options_.hole_radius; }
-  /// @brief Coarsest mesh size in the unit box (lsr::ReconstructionOptions::h_max).
-  void setMaximumSize(double h_max) { options_.h_max = h_max; }
-  double getMaximumSize() const { return options_.h_max; }
+  /// 0.4); negative (the default): lsr::automatic_defaults(D).hole_radius, 0.06 in 3D, none in
+  /// 2D; 0: none, the front enters through
+  /// holes (lsr::SamplingOptions::hole_radius).
+  void setHoleRadius(double radius) { options_.sampling.hole_radius = radius; }
+  double getHoleRadius() const { return options_.sampling.hole_radius; }
+  /// @brief Coarsest mesh size in the unit box (lsr::MeshOptions::h_max).
+  void setMaximumSize(double h_max) { options_.mesh.h_max = h_max; }
+  double getMaximumSize() const { return options_.mesh.h_max; }
   /// @brief Grading c of the adaptive mesh; smaller widens the fine band
-  /// (lsr::ReconstructionOptions::grading).
-  void setGrading(double c) { options_.grading = c; }
-  double getGrading() const { return options_.grading; }
-  /// @brief Attraction weight alpha (lsr::ReconstructionOptions::alpha).
-  void setAlpha(double alpha) { options_.alpha = alpha; }
-  double getAlpha() const { return options_.alpha; }
+  /// (lsr::MeshOptions::grading).
+  void setGrading(double c) { options_.mesh.grading = c; }
+  double getGrading() const { return options_.mesh.grading; }
+  /// @brief Attraction weight alpha (lsr::EvolutionOptions::alpha).
+  void setAlpha(double alpha) { options_.evolution.alpha = alpha; }
+  double getAlpha() const { return options_.evolution.alpha; }
   /// @brief Curvature (smoothness) weight beta, unit box length^2; negative: from the local
-  /// sampling spacing and noise (lsr::ReconstructionOptions::curvature_weight).
-  void setCurvatureWeight(double beta) { options_.curvature_weight = beta; }
-  double getCurvatureWeight() const { return options_.curvature_weight; }
-  /// @brief Time step in unit-box time (lsr::ReconstructionOptions::time_step).
-  void setTimeStep(double dt) { options_.time_step = dt; }
-  double getTimeStep() const { return options_.time_step; }
-  /// @brief Time steps at most (lsr::ReconstructionOptions::max_iterations).
-  void setMaxIterations(int n) { options_.max_iterations = n; }
-  int getMaxIterations() const { return options_.max_iterations; }
+  /// sampling spacing and noise (lsr::EvolutionOptions::curvature_weight).
+  void setCurvatureWeight(double beta) { options_.evolution.curvature_weight = beta; }
+  double getCurvatureWeight() const { return options_.evolution.curvature_weight; }
+  /// @brief Time step in unit-box time (lsr::EvolutionOptions::time_step).
+  void setTimeStep(double dt) { options_.evolution.time_step = dt; }
+  double getTimeStep() const { return options_.evolution.time_step; }
+  /// @brief Time steps at most (lsr::StoppingOptions::max_iterations).
+  void setMaxIterations(int n) { options_.stopping.max_iterations = n; }
+  int getMaxIterations() const { return options_.stopping.max_iterations; }
   /// @brief Stopping tolerance in the unit box; 0 follows the local sampling spacing
-  /// (lsr::ReconstructionOptions::tolerance).
-  void setTolerance(double eps) { options_.tolerance = eps; }
-  double getTolerance() const { return options_.tolerance; }
+  /// (lsr::StoppingOptions::tolerance).
+  void setTolerance(double eps) { options_.stopping.tolerance = eps; }
+  double getTolerance() const { return options_.stopping.tolerance; }
   /// @brief Renormalise every k steps, k at most 5 (the stall rule's patience); 0: automatic
-  /// (lsr::ReconstructionOptions::renormalization_interval).
-  void setRenormalizationInterval(int k) { options_.renormalization_interval = k; }
-  int getRenormalizationInterval() const { return options_.renormalization_interval; }
+  /// (lsr::EvolutionOptions::renormalization_interval).
+  void setRenormalizationInterval(int k) { options_.evolution.renormalization_interval = k; }
+  int getRenormalizationInterval() const { return options_.evolution.renormalization_interval; }
   /// @brief Start from the tagged front around the data, a sphere around it or inside it
-  /// (lsr::ReconstructionOptions::initial_front).
-  void setInitialSurface(lsr::InitialFront start) { options_.initial_front = start; }
-  lsr::InitialFront getInitialSurface() const { return options_.initial_front; }
+  /// (lsr::StartOptions::initial_front).
+  void setInitialSurface(lsr::InitialFront start) { options_.start.initial_front = start; }
+  lsr::InitialFront getInitialSurface() const { return options_.start.initial_front; }
   /// @brief 2 for curves in the plane z = const, 3 for surfaces, 0 (the default): 2 when the
   /// cloud is planar, else 3 (lsr::adapters::detect_dimension).
   void setDimension(int dimension) { dimension_ = dimension; }
   int getDimension() const { return dimension_; }
   /// @brief Refuse (reconstruct() fails with PCL_ERROR, nothing allocated) clouds and meshes
-  /// predicted to need more bytes (lsr::ReconstructionOptions::max_memory).
-  void setMaximumMemory(double bytes) { options_.max_memory = bytes; }
-  double getMaximumMemory() const { return options_.max_memory; }
+  /// predicted to need more bytes (lsr::LimitOptions::max_memory).
+  void setMaximumMemory(double bytes) { options_.limits.max_memory = bytes; }
+  double getMaximumMemory() const { return options_.limits.max_memory; }
   /// @brief Refuse meshes predicted to need more vertices; 0: from the memory limit
-  /// (lsr::ReconstructionOptions::max_vertices).
-  void setMaxMeshVertices(int n) { options_.max_vertices = n; }
-  int getMaxMeshVertices() const { return options_.max_vertices; }
-  /// @brief Threads; 0: all cores (lsr::ReconstructionOptions::threads).
-  void setThreads(int n) { options_.threads = n; }
-  int getThreads() const { return options_.threads; }
+  /// (lsr::LimitOptions::max_vertices).
+  void setMaxMeshVertices(int n) { options_.limits.max_vertices = n; }
+  int getMaxMeshVertices() const { return options_.limits.max_vertices; }
+  /// @brief Threads; 0: all cores (lsr::LimitOptions::threads).
+  void setThreads(int n) { options_.limits.threads = n; }
+  int getThreads() const { return options_.limits.threads; }
   /// @brief Also mesh the inside and the outside of the result within the box, sharing its
-  /// surface vertex for vertex (lsr::ReconstructionOptions::volume_mesh); after reconstruct(),
+  /// surface vertex for vertex (lsr::OutputOptions::volume_mesh); after reconstruct(),
   /// getVolumeMesh3D() (surfaces) or getVolumeMesh2D() (curves) holds it, in cloud coordinates.
-  void setVolumeMeshOutput(bool on) { options_.volume_mesh = on; }
+  void setVolumeMeshOutput(bool on) { options_.output.volume_mesh = on; }
   const lsr::VolumeMesh<3>& getVolumeMesh3D() const { return volume3_; }
   const lsr::VolumeMesh<2>& getVolumeMesh2D() const { return volume2_; }
   /// @brief Called with (stage, fraction in [0, 1]); return false to cancel.
