@@ -70,6 +70,10 @@ struct LocalSampling {
   /// as scan lines; its normals and noise then come from kHoleNeighbours neighbours, and its
   /// spacing is at least the radius of the largest empty disc among them over kHoleToSpacing
   static constexpr double kScanLineElongation = 0.4;
+  /// ... or when more than this fraction of its points have a normal of their kNeighbours
+  /// nearest more than 45 degrees from that of their kHoleNeighbours nearest: dense scan lines
+  /// whose noise hides their elongation (local_sampling.cpp)
+  static constexpr double kScanLineDisagreement = 0.1;
   static constexpr int kHoleNeighbours = 32;
   static constexpr double kHoleToSpacing = 0.55;
 };
