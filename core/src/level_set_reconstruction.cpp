@@ -9,23 +9,21 @@
 #include "evolution/evolution_settings.h"
 #include "evolution/front_evolution.h"
 #include "evolution/pinning.h"
+#include "evolution/renormalization.h"
 #include "evolution/stopping_test.h"
 #include "fit/fitted_surface.h"
 #include "limits/memory_budget.h"
 #include "limits/option_checks.h"
 #include "mesh/data_mesh.h"
+#include "mesh/point_location.h"
 #include "mesh/vertex_fields.h"
 #include "mesh/vertices_near.h"
 #include "sampling/data_preparation.h"
+#include "sampling/local_sampling.h"
+#include "sampling/unit_box_transform.h"
 #include "stage_clock.h"
 #include "start/start_fields.h"
 #include "surface/closed_surface.h"
-
-#include "evolution/renormalization.h"
-#include "mesh/point_location.h"
-#include "sampling/local_sampling.h"
-#include "sampling/unit_box_transform.h"
-
 
 namespace lsr {
 namespace {
@@ -119,8 +117,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.open_side_points = start.held.empty() ? 0 : start.open_side_points;
   r.tagged_start = start.tagged;
   clock.end("setup");
-  std::vector<char> near_hole;  // within a hole's radius of a vertex over it; empty without
-  if (!attract.over_hole.empty()) near_hole = near_any(mesh.vertices, attract.over_hole, hole_radius, o.limits.threads);
+  // Within a hole's radius of a vertex over it; empty without spanned holes.
+  std::vector<char> near_hole = attract.over_hole.empty() ? std::vector<char>() : near_any(mesh.vertices, attract.over_hole, hole_radius, o.limits.threads);
   std::vector<char> near_opening = start.near_opening;
   close_pocket(start, attract.d, near_hole, near_opening);
   const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
@@ -193,10 +191,8 @@ ReconstructionResult<D> reconstruct_from(const Points<D>& points, const SignedDi
   return cancellable_pipeline<D>(points, o, progress, &initial);
 }
 
-template ReconstructionResult<2> reconstruct_from<2>(const Points<2>&, const SignedDistance<2>&,
-                                                     const ReconstructionOptions&, const ProgressCallback&);
-template ReconstructionResult<3> reconstruct_from<3>(const Points<3>&, const SignedDistance<3>&,
-                                                     const ReconstructionOptions&, const ProgressCallback&);
+template ReconstructionResult<2> reconstruct_from<2>(const Points<2>&, const SignedDistance<2>&, const ReconstructionOptions&, const ProgressCallback&);
+template ReconstructionResult<3> reconstruct_from<3>(const Points<3>&, const SignedDistance<3>&, const ReconstructionOptions&, const ProgressCallback&);
 template ReconstructionResult<2> reconstruct<2>(const Points<2>&, const ReconstructionOptions&, const ProgressCallback&);
 template ReconstructionResult<3> reconstruct<3>(const Points<3>&, const ReconstructionOptions&, const ProgressCallback&);
 
