@@ -179,10 +179,11 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
       const lsr::VolumeMeshQuality& q = out.volume;
       std::fprintf(stderr,
                    "[volume] %zu inside + %zu outside %s, %s min %.2f median %.1f degrees, %.1f%% with one below 5, "
-                   "%zu inverted, %zu surface vertices kept short of the fit to keep their simplices valid -> %s\n",
+                   "%zu inverted, smallest %.1e of the mean %s, %zu surface vertices kept short of the fit to keep their simplices valid -> %s\n",
                    q.inside_simplices, q.outside_simplices, D == 3 ? "tetrahedra" : "triangles",
                    D == 3 ? "dihedral angles" : "angles", q.min_angle_degrees, q.median_angle_degrees,
-                   100 * q.small_angle_fraction, q.inverted, r.volume.pulled_back, c.volume_mesh.c_str());
+                   100 * q.small_angle_fraction, q.inverted, q.min_relative_measure, D == 3 ? "volume" : "area",
+                   r.volume.pulled_back, c.volume_mesh.c_str());
     }
     // One level: the whole run; several: each level's own solve and write.
     double seconds = total.lap();

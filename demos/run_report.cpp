@@ -91,6 +91,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                              {"inside_simplices", q.inside_simplices},
                              {"outside_simplices", q.outside_simplices},
                              {"inverted", q.inverted},
+                             {"min_relative_measure", q.min_relative_measure},
                              {"surface_vertices_pulled_back", r.volume.pulled_back},
                              {"min_angle_degrees", q.min_angle_degrees},
                              {"median_angle_degrees", q.median_angle_degrees},

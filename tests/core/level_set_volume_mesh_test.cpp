@@ -10,6 +10,7 @@
 #include "lsrecon/testdata/shape_corpus.h"
 #include "mesh/adaptive_refinement.h"
 #include "surface/surface_topology.h"
+#include "volume/sliver_removal.h"
 
 #include <gtest/gtest.h>
 
@@ -125,6 +126,7 @@ TEST(LevelSetVolumeMesh, TorusInsideAndOutsideConformAndShareTheSurface) {
   const VolumeMeshQuality q = volume_mesh_quality(v);
   EXPECT_EQ(q.inverted, 0u);
   EXPECT_GT(q.min_angle_degrees, 0.0);
+  EXPECT_GE(q.min_relative_measure, kFlatMeasure);
   // The unit box, up to the rounding of a sum of #simplices terms.
   const double rounding = double(v.simplices.size()) * std::numeric_limits<double>::epsilon();
   EXPECT_NEAR(q.inside_measure + q.outside_measure, 1.0, rounding);
@@ -147,6 +149,7 @@ TEST(LevelSetVolumeMesh, TwoCirclesGiveTwoInsidePiecesAndAConformingOutside) {
   expect_conforming_with_the_surface_as_boundary<2>(r.volume);
   const VolumeMeshQuality q = volume_mesh_quality(r.volume);
   EXPECT_EQ(q.inverted, 0u);
+  EXPECT_GE(q.min_relative_measure, kFlatMeasure);
   EXPECT_NEAR(q.inside_measure + q.outside_measure, 1.0, double(r.volume.simplices.size()) * 1.2e-16);
   const double exact = 2 * kPi * 0.15 * 0.15, length = 2 * 2 * kPi * 0.15;
   EXPECT_NEAR(q.inside_measure, exact, length * interpolation_bound(2, h, 1.0 / 0.15));
@@ -173,11 +176,12 @@ TEST(LevelSetVolumeMesh, ReconstructionReturnsMeshesSharingItsSurface) {
   }
   const VolumeMeshQuality q = volume_mesh_quality(v);
   EXPECT_EQ(q.inverted, 0u);
+  EXPECT_GE(q.min_relative_measure, kFlatMeasure);  // the fit may not flatten a simplex either
   const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
   EXPECT_NEAR(q.inside_measure, t.signed_volume, double(v.simplices.size()) * 1e-16 * q.inside_measure);
-  std::printf("random torus: %zu + %zu tetrahedra, dihedral min %.2f median %.1f, %.1f%% below 5 degrees, %zu pulled back\n",
+  std::printf("random torus: %zu + %zu tetrahedra, dihedral min %.2f median %.1f, %.1f%% below 5 degrees, smallest %.1e of the mean, %zu pulled back\n",
               q.inside_simplices, q.outside_simplices, q.min_angle_degrees, q.median_angle_degrees,
-              100 * q.small_angle_fraction, v.pulled_back);
+              100 * q.small_angle_fraction, q.min_relative_measure, v.pulled_back);
 }
 
 TEST(LevelSetVolumeMesh, ASurfaceFromOtherValuesIsRefused) {

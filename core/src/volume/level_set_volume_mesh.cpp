@@ -3,9 +3,12 @@
 
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/types.h"
+#include "volume/simplex_angles.h"
+#include "volume/sliver_removal.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <unordered_map>
 
@@ -17,116 +20,6 @@ bool negative(double u) { return u < 0.0; }  // as the extraction decides: 0 is 
 std::uint64_t edge_key(Index a, Index b) {
   if (a > b) std::swap(a, b);
   return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-}
-
-template <int D>
-double signed_measure_of(const Points<D>& x, const std::array<Index, D + 1>& s) {
-  Eigen::Matrix<double, D, D> e;
-  for (int k = 0; k < D; ++k) e.col(k) = x[s[k + 1]] - x[s[0]];
-  return e.determinant() / (D == 2 ? 2.0 : 6.0);
-}
-
-// Angles at the simplices' edges: the dihedral angles of a tetrahedron, the angles of a triangle.
-double interior_angle(const Vec<2>& a, const Vec<2>& b, const Vec<2>& c) {  // at a
-  return std::atan2(std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()), (b - a).dot(c - a));
-}
-
-template <int D>
-void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vector<double>& angles) {
-  if constexpr (D == 2) {
-    for (int k = 0; k < 3; ++k) angles.push_back(interior_angle(x[s[k]], x[s[(k + 1) % 3]], x[s[(k + 2) % 3]]));
-  } else {
-    // At edge (i, j): the angle between the faces opposite k and l, from their outward normals.
-    for (int i = 0; i < 4; ++i) {
-      for (int j = i + 1; j < 4; ++j) {
-        int k = 0;
-        while (k == i || k == j) ++k;
-        int l = 6 - i - j - k;
-        const Vec<3> e = x[s[j]] - x[s[i]];
-        // Components of the opposite vertices orthogonal to the edge.
-        Vec<3> pk = x[s[k]] - x[s[i]], pl = x[s[l]] - x[s[i]];
-        pk -= e * (pk.dot(e) / e.squaredNorm());
-        pl -= e * (pl.dot(e) / e.squaredNorm());
-        angles.push_back(std::atan2(pk.cross(pl).norm(), pk.dot(pl)));
-      }
-    }
-  }
-}
-
-template <int D>
-double min_angle(const Points<D>& x, const std::array<Index, D + 1>& s) {
-  std::vector<double> angles;
-  add_angles<D>(x, s, angles);
-  return *std::min_element(angles.begin(), angles.end());
-}
-
-// Slivers come from cuts close to a mesh vertex: the thin simplices between that vertex and the
-// surface. Each box-mesh vertex (not on the surface, not on a wall) in a simplex with an angle
-// below 10 degrees moves towards the centroid of its neighbours, or half-way, when that raises
-// the smallest angle of its simplices (and so keeps them positive). The surface does not move.
-template <int D>
-void improve_slivers(VolumeMesh<D>& m, int passes) {
-  const double bad = 10.0 * kPi / 180.0;
-  const std::size_t nv = m.vertices.size();
-  std::vector<Index> offsets(nv + 1, 0), incident;
-  for (const auto& s : m.simplices) {
-    for (Index v : s) ++offsets[std::size_t(v) + 1];
-  }
-  for (std::size_t v = 1; v <= nv; ++v) offsets[v] += offsets[v - 1];
-  incident.resize(std::size_t(offsets[nv]));
-  std::vector<Index> fill(offsets.begin(), offsets.end() - 1);
-  for (std::size_t s = 0; s < m.simplices.size(); ++s) {
-    for (Index v : m.simplices[s]) incident[std::size_t(fill[std::size_t(v)]++)] = Index(s);
-  }
-  auto movable = [&](Index v) {
-    if (v >= m.interface_offset) return false;
-    for (int k = 0; k < D; ++k) {
-      if (m.vertices[std::size_t(v)][k] <= 0.0 || m.vertices[std::size_t(v)][k] >= 1.0) return false;  // a wall
-    }
-    return true;
-  };
-  auto worst_around = [&](Index v) {
-    double w = kPi;
-    for (Index k = offsets[std::size_t(v)]; k < offsets[std::size_t(v) + 1]; ++k) {
-      const auto& s = m.simplices[std::size_t(incident[std::size_t(k)])];
-      if (signed_measure_of<D>(m.vertices, s) <= 0.0) return -1.0;
-      w = std::min(w, min_angle<D>(m.vertices, s));
-    }
-    return w;
-  };
-  for (int pass = 0; pass < passes; ++pass) {
-    std::vector<char> candidate(nv, 0);
-    for (const auto& s : m.simplices) {
-      if (min_angle<D>(m.vertices, s) >= bad) continue;
-      for (Index v : s) candidate[std::size_t(v)] = movable(v) ? 1 : 0;
-    }
-    for (std::size_t v = 0; v < nv; ++v) {
-      if (!candidate[v]) continue;
-      Vec<D> centroid = Vec<D>::Zero();
-      double count = 0.0;
-      for (Index k = offsets[v]; k < offsets[v + 1]; ++k) {
-        for (Index w : m.simplices[std::size_t(incident[std::size_t(k)])]) {
-          if (std::size_t(w) == v) continue;
-          centroid += m.vertices[std::size_t(w)];
-          count += 1.0;
-        }
-      }
-      centroid /= count;
-      const Vec<D> before = m.vertices[v];
-      const double quality = worst_around(Index(v));
-      Vec<D> best = before;
-      double best_quality = quality;
-      for (double step : {1.0, 0.5, 0.25}) {
-        m.vertices[v] = before + step * (centroid - before);
-        const double q = worst_around(Index(v));
-        if (q > best_quality) {
-          best_quality = q;
-          best = m.vertices[v];
-        }
-      }
-      m.vertices[v] = best;
-    }
-  }
 }
 
 template <int D>
@@ -252,23 +145,25 @@ std::array<Index, D> outward_facet(const std::array<Index, D + 1>& s, int opposi
   return f;
 }
 
-// Vertices that moved since the cut (the surface's projection onto a fit) can turn a thin
-// simplex inside out: such vertices go back towards where the cut put them, halving the move
-// until every simplex is positive (at the cut positions they all are, by construction).
+// Vertices that moved since the cut (the surface's projection onto a fit) can flatten a thin
+// simplex or turn it inside out: such vertices go back towards where the cut put them, halving
+// the move until no simplex they are in is flat (at the cut positions every simplex is
+// positive, by construction; one flat there is the smoothing's business).
 template <int D>
 void Splitter<D>::untangle() {
   const Index first_movable = out_.interface_offset;
+  const double flat = kFlatMeasure / double(out_.simplices.size());  // the box's measure is 1
   std::vector<char> pulled(out_.vertices.size(), 0);
   constexpr int kHalvings = 10;
   for (int round = 0; round <= kHalvings; ++round) {
     std::vector<char> move(out_.vertices.size(), 0);
     bool any = false;
     for (const auto& s : out_.simplices) {
-      if (signed_measure_of<D>(out_.vertices, s) > 0.0) continue;
+      if (signed_measure_of<D>(out_.vertices, s) > flat) continue;
       for (Index v : s) {
-        if (v >= first_movable) move[v] = pulled[v] = 1;
+        if (v >= first_movable && out_.vertices[v] != cut_[v]) move[v] = pulled[v] = 1;
+        any = any || move[v];
       }
-      any = true;
     }
     if (!any) break;
     for (std::size_t v = 0; v < move.size(); ++v) {
@@ -383,7 +278,7 @@ VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vecto
   Splitter<D> splitter(mesh, values, surface);
   for (Index s = 0; s < Index(mesh.simplices.size()); ++s) splitter.split(s);
   VolumeMesh<D> out = splitter.take();
-  improve_slivers(out, 3);
+  smooth_near_slivers(out, 3);
   return out;
 }
 
@@ -393,9 +288,11 @@ VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
   std::vector<double> angles;
   angles.reserve(mesh.simplices.size() * (D == 2 ? 3 : 6));
   std::size_t small = 0;
+  double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
     const double m = signed_measure_of<D>(mesh.vertices, mesh.simplices[s]);
     if (m <= 0.0) ++q.inverted;
+    smallest = std::min(smallest, m);
     if (mesh.regions[s] == kInsideRegion) {
       q.inside_measure += m;
       ++q.inside_simplices;
@@ -406,6 +303,9 @@ VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
     const std::size_t first = angles.size();
     add_angles<D>(mesh.vertices, mesh.simplices[s], angles);
     if (*std::min_element(angles.begin() + std::ptrdiff_t(first), angles.end()) < 5.0 * kPi / 180.0) ++small;
+  }
+  if (!mesh.simplices.empty()) {
+    q.min_relative_measure = smallest * double(mesh.simplices.size()) / (q.inside_measure + q.outside_measure);
   }
   q.small_angle_fraction = mesh.simplices.empty() ? 0.0 : double(small) / double(mesh.simplices.size());
   if (!angles.empty()) {

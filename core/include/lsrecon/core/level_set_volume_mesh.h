@@ -11,8 +11,9 @@
 /// faces are cut along the diagonal through their smallest vertex id, as on the other side of
 /// the face (Dompierre et al. 1999), so the result is conforming; the interface quad follows the
 /// surface's diagonal, and a prism whose three diagonals turn in a cycle gets a centre vertex.
-/// Box-mesh vertices next to slivers then move towards their neighbours' centroid where that
-/// raises the smallest angle around them; the surface does not move.
+/// Surface vertices whose final position would flatten a simplex (below 1e-9 of the mean measure)
+/// stay short of it; box-mesh vertices next to slivers or tiny corners then move towards their
+/// neighbours' centroid where that improves the worst simplex around them.
 #pragma once
 
 #include "lsrecon/core/level_set_extraction.h"
@@ -38,7 +39,7 @@ struct VolumeMesh {
   std::vector<std::array<Index, D>> walls;          ///< the box's boundary facets, normals outwards
   Index interface_offset = 0;
   /// Interface vertices moved back towards where the cut put them, because their final position
-  /// (e.g. on a fit) would have turned a thin simplex inside out; the surface must take their
+  /// (e.g. on a fit) would have flattened a thin simplex or turned it inside out; the surface must take their
   /// positions from here to stay the inside's boundary.
   std::size_t pulled_back = 0;
 };
@@ -55,6 +56,7 @@ VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vecto
 /// @brief What a simulation user checks before using a mesh.
 struct VolumeMeshQuality {
   std::size_t inverted = 0;        ///< simplices of measure <= 0
+  double min_relative_measure = 0.0;  ///< the smallest simplex's measure over the mean one's (>= 1e-9 sought)
   double min_angle_degrees = 0.0;  ///< smallest dihedral angle (3D) or angle (2D)
   double median_angle_degrees = 0.0;
   double small_angle_fraction = 0.0;  ///< of the simplices, those with an angle below 5 degrees
