@@ -15,12 +15,14 @@
 
 #include <fstream>
 #include <map>
+#include <utility>
 #include <regex>
 #include <sstream>
 
 namespace {
 
 using lsr_test::Cli;
+using lsr_test::CliRun;
 
 struct GmshView {
   int status = -1;
@@ -69,18 +71,20 @@ class GmshReads : public Cli {
     return v;
   }
 
-  static nlohmann::json report(const std::string& file) {
-    std::ifstream in(file);
-    return nlohmann::json::parse(in)["volume_mesh"];
+  // lsrecon on a demo writing NAME.msh and NAME.json; Gmsh's view of the mesh, and lsrecon's report.
+  std::pair<GmshView, nlohmann::json> reconstruct(const std::string& demo, const std::string& output,
+                                                  const std::string& name) const {
+    const CliRun r = run("--demo " + demo + " --points 3000 --quiet " + path(output) + " --volume-mesh " + path(name + ".msh") +
+                         " --report " + path(name + ".json"));
+    EXPECT_EQ(r.status, 0) << r.output;
+    std::ifstream report(path(name + ".json"));
+    return {gmsh(path(name + ".msh")), nlohmann::json::parse(report)["volume_mesh"]};
   }
 };
 
 TEST_F(GmshReads, TheTetrahedraOfASphereWithTheirLabelsAndPositiveVolumes) {
-  ASSERT_EQ(run("--demo sphere --points 3000 --quiet " + path("s.ply") + " --volume-mesh " + path("s.msh") +
-                " --report " + path("s.json")).status, 0);
-  const GmshView g = gmsh(path("s.msh"));
+  const auto [g, r] = reconstruct("sphere", "s.ply", "s");
   ASSERT_EQ(g.status, 0) << read("gmsh.txt");
-  const nlohmann::json r = report(path("s.json"));
   pcl::PolygonMesh surface;
   ASSERT_EQ(pcl::io::loadPLYFile(path("s.ply"), surface), 0);
   const long inside = r["inside_simplices"], outside = r["outside_simplices"];
@@ -101,11 +105,8 @@ TEST_F(GmshReads, TheTetrahedraOfASphereWithTheirLabelsAndPositiveVolumes) {
 }
 
 TEST_F(GmshReads, TheTrianglesOfThreeShapesWithTheirLabelsAndPositiveAreas) {
-  ASSERT_EQ(run("--demo three-shapes --points 3000 --quiet " + path("t.svg") + " --volume-mesh " + path("t.msh") +
-                " --report " + path("t.json")).status, 0);
-  const GmshView g = gmsh(path("t.msh"));
+  const auto [g, r] = reconstruct("three-shapes", "t.svg", "t");
   ASSERT_EQ(g.status, 0) << read("gmsh.txt");
-  const nlohmann::json r = report(path("t.json"));
   EXPECT_EQ((g.by_type_and_group.at({2, 1})), r["inside_simplices"].get<long>());
   EXPECT_EQ((g.by_type_and_group.at({2, 2})), r["outside_simplices"].get<long>());
   EXPECT_GT((g.by_type_and_group.at({1, 10})), 0);  // type 1: line; the three curves
