@@ -300,9 +300,9 @@ VolumeMeshQuality volume_mesh_quality(const VolumeMesh<D>& mesh) {
       q.outside_measure += m;
       ++q.outside_simplices;
     }
-    const std::size_t first = angles.size();
-    add_angles<D>(mesh.vertices, mesh.simplices[s], angles);
-    if (*std::min_element(angles.begin() + std::ptrdiff_t(first), angles.end()) < 5.0 * kPi / 180.0) ++small;
+    const auto these = angles_of<D>(mesh.vertices, mesh.simplices[s]);
+    angles.insert(angles.end(), these.begin(), these.end());
+    if (*std::min_element(these.begin(), these.end()) < 5.0 * kPi / 180.0) ++small;
   }
   if (!mesh.simplices.empty()) {
     q.min_relative_measure = smallest * double(mesh.simplices.size()) / (q.inside_measure + q.outside_measure);

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <vector>
 
 namespace lsr {
 
@@ -20,16 +19,18 @@ double signed_measure_of(const Points<D>& x, const std::array<Index, D + 1>& s) 
   return e.determinant() / (D == 2 ? 2.0 : 6.0);
 }
 
-/// Appends the simplex's angles (radians): 3 in 2D, the 6 dihedral angles in 3D.
+/// The simplex's angles (radians): the 3 of a triangle, the 6 dihedral angles of a tetrahedron.
 template <int D>
-void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vector<double>& angles) {
+std::array<double, D == 2 ? 3 : 6> angles_of(const Points<D>& x, const std::array<Index, D + 1>& s) {
+  std::array<double, D == 2 ? 3 : 6> angles{};
   if constexpr (D == 2) {
     for (int k = 0; k < 3; ++k) {
       const Vec<2> b = x[s[(k + 1) % 3]] - x[s[k]], c = x[s[(k + 2) % 3]] - x[s[k]];
-      angles.push_back(std::atan2(std::abs(b.x() * c.y() - b.y() * c.x()), b.dot(c)));
+      angles[std::size_t(k)] = std::atan2(std::abs(b.x() * c.y() - b.y() * c.x()), b.dot(c));
     }
   } else {
     // At edge (i, j): the angle between the components of the two other vertices orthogonal to it.
+    std::size_t n = 0;
     for (int i = 0; i < 4; ++i) {
       for (int j = i + 1; j < 4; ++j) {
         int k = 0;
@@ -39,19 +40,18 @@ void add_angles(const Points<D>& x, const std::array<Index, D + 1>& s, std::vect
         Vec<3> pk = x[s[k]] - x[s[i]], pl = x[s[l]] - x[s[i]];
         pk -= e * (pk.dot(e) / e.squaredNorm());
         pl -= e * (pl.dot(e) / e.squaredNorm());
-        angles.push_back(std::atan2(pk.cross(pl).norm(), pk.dot(pl)));
+        angles[n++] = std::atan2(pk.cross(pl).norm(), pk.dot(pl));
       }
     }
   }
+  return angles;
 }
 
 /// The smallest angle of the simplex, or -1 if it is flat or inverted.
 template <int D>
 double min_angle(const Points<D>& x, const std::array<Index, D + 1>& s) {
   if (!(signed_measure_of<D>(x, s) > 0.0)) return -1.0;
-  std::vector<double> angles;
-  angles.reserve(6);
-  add_angles<D>(x, s, angles);
+  const auto angles = angles_of<D>(x, s);
   return *std::min_element(angles.begin(), angles.end());
 }
 

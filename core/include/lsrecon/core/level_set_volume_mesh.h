@@ -39,8 +39,8 @@ struct VolumeMesh {
   std::vector<std::array<Index, D>> walls;          ///< the box's boundary facets, normals outwards
   Index interface_offset = 0;
   /// Interface vertices moved back towards where the cut put them, because their final position
-  /// (e.g. on a fit) would have flattened a thin simplex or turned it inside out; the surface must take their
-  /// positions from here to stay the inside's boundary.
+  /// (e.g. on a fit) would have flattened a thin simplex or turned it inside out; the surface
+  /// must take their positions from here to stay the inside's boundary.
   std::size_t pulled_back = 0;
 };
 
@@ -56,7 +56,7 @@ VolumeMesh<D> split_along_level_set(const SimplexMesh<D>& mesh, const std::vecto
 /// @brief What a simulation user checks before using a mesh.
 struct VolumeMeshQuality {
   std::size_t inverted = 0;        ///< simplices of measure <= 0
-  double min_relative_measure = 0.0;  ///< the smallest simplex's measure over the mean one's (>= 1e-9 sought)
+  double min_relative_measure = 0.0;  ///< smallest simplex measure over the mean (1e-9 sought)
   double min_angle_degrees = 0.0;  ///< smallest dihedral angle (3D) or angle (2D)
   double median_angle_degrees = 0.0;
   double small_angle_fraction = 0.0;  ///< of the simplices, those with an angle below 5 degrees
