@@ -42,7 +42,8 @@ class GmshReads : public Cli {
                                      << "Mesh.MshFileVersion = 2.2;\n"
                                      << "Save \"" << saved << "\";\n";
     const std::string log = path("gmsh.txt");
-    const int raw = std::system((std::string(LSRECON_GMSH) + " -nopopup " + path("check.geo") + " -0 > " + log + " 2>&1").c_str());
+    const std::string command = std::string(LSRECON_GMSH) + " -nopopup " + path("check.geo") + " -0 > " + log + " 2>&1";
+    const int raw = std::system(command.c_str());
     GmshView v;
     v.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     const std::string text = read("gmsh.txt");
@@ -74,8 +75,8 @@ class GmshReads : public Cli {
   // lsrecon on a demo writing NAME.msh and NAME.json; Gmsh's view of the mesh, and lsrecon's report.
   std::pair<GmshView, nlohmann::json> reconstruct(const std::string& demo, const std::string& output,
                                                   const std::string& name) const {
-    const CliRun r = run("--demo " + demo + " --points 3000 --quiet " + path(output) + " --volume-mesh " + path(name + ".msh") +
-                         " --report " + path(name + ".json"));
+    const CliRun r = run("--demo " + demo + " --points 3000 --quiet " + path(output) + " --volume-mesh " +
+                         path(name + ".msh") + " --report " + path(name + ".json"));
     EXPECT_EQ(r.status, 0) << r.output;
     std::ifstream report(path(name + ".json"));
     return {gmsh(path(name + ".msh")), nlohmann::json::parse(report)["volume_mesh"]};
