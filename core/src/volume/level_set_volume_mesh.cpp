@@ -154,8 +154,11 @@ void Splitter<D>::untangle() {
   const Index first_movable = out_.interface_offset;
   const double flat = kFlatMeasure / double(out_.simplices.size());  // the box's measure is 1
   std::vector<char> pulled(out_.vertices.size(), 0);
+  // After kHalvings rounds the vertices still in a flat simplex go to their cut positions; that
+  // can flatten a simplex one of them shares with a vertex still part-way, so the rounds go on
+  // (each puts at least one vertex back for good) until no moved vertex is in a flat simplex.
   constexpr int kHalvings = 10;
-  for (int round = 0; round <= kHalvings; ++round) {
+  for (int round = 0;; ++round) {
     std::vector<char> move(out_.vertices.size(), 0);
     bool any = false;
     for (const auto& s : out_.simplices) {
@@ -168,7 +171,7 @@ void Splitter<D>::untangle() {
     if (!any) break;
     for (std::size_t v = 0; v < move.size(); ++v) {
       if (!move[v]) continue;
-      out_.vertices[v] = round == kHalvings ? cut_[v] : Vec<D>(cut_[v] + 0.5 * (out_.vertices[v] - cut_[v]));
+      out_.vertices[v] = round >= kHalvings ? cut_[v] : Vec<D>(cut_[v] + 0.5 * (out_.vertices[v] - cut_[v]));
     }
   }
   out_.pulled_back = std::size_t(std::count(pulled.begin(), pulled.end(), char(1)));
