@@ -58,5 +58,19 @@ TEST(ScanReconstruction, AnOpenUndersideClosesWithoutTunnels) {
   }
 }
 
+// Two spheres from above: the discs spanning their undersides kept the flood out, so nothing was
+// closed, and the front tunnelled between the scan lines from inside until the spheres merged
+// (one component here; genus 9 at 60 x 600 lines). The open sides are now found on a flood the
+// discs do not stop (start_fields.cpp).
+TEST(ScanReconstruction, UndersidesTheDiscsSpanAreClosedToo) {
+  ScannerSettings s;
+  s.lines = 40;
+  s.samples_per_line = 400;
+  s.from_above = true;
+  const SurfaceTopology spheres = scan_topology("two-spheres", s);
+  EXPECT_TRUE(spheres.watertight);
+  EXPECT_EQ(spheres.genus, (std::vector<int>{0, 0}));
+}
+
 }  // namespace
 }  // namespace lsr

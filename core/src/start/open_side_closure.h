@@ -10,7 +10,9 @@
 /// open space, the other lies in a pocket entered round the sheet's rim), and the pocket is
 /// where the oriented points' winding number exceeds 1/2 (winding_number.h): under an open
 /// sheet, up to the disc spanning its rim. The pocket is taken from the flood; there and in the
-/// band behind two-sided points the front is held by curvature alone. Derivation and
+/// band behind two-sided points the front is held by curvature alone. A pocket inside data
+/// closed up to holes (median winding number near 1) is left to the tangent discs, which span
+/// holes along the surface's curvature where the membrane is flat. Derivation and
 /// measurements: docs/how-it-works.md (Open sides).
 #pragma once
 
@@ -41,10 +43,28 @@ constexpr double kOpenSideShare = 0.05;
 /// gap_factor local scales from the data.
 /// @param normals the points' unoriented normals, `point_scale` their local scales
 /// @param vertex_scale #V the nearest point's scale, `dist` #V the distance to the data
+/// @param disc_sides when `reached` ignores the tangent discs: one_sided_points of the flood
+/// the discs stop; if the pocket is then the inside of data closed up to holes (its median
+/// winding number at least 0.95), nothing is taken back (the discs span the holes)
 template <int D>
 OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,
                            const Points<D>& normals, const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
                            const std::vector<double>& dist, const std::vector<Index>& nearest, double gap_factor,
-                           std::vector<char>& reached, int threads);
+                           std::vector<char>& reached, const std::vector<signed char>* disc_sides, int threads);
+
+/// @brief close_open_sides's gate alone: kOpenSideShare or more of the points `reached` comes
+/// near are reached from both sides (3D).
+template <int D>
+bool reached_from_both_sides(const SimplexMesh<D>& mesh, const NearestPointIndex<D>& data, const Points<D>& normals,
+                             const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
+                             const std::vector<double>& dist, double gap_factor, const std::vector<char>& reached, int threads);
+
+/// @brief Per point, +1 / -1 when `reached` comes near it along its normal / against it only,
+/// 0 when on both sides or neither (3D).
+template <int D>
+std::vector<signed char> one_sided_points(const SimplexMesh<D>& mesh, const NearestPointIndex<D>& data, const Points<D>& normals,
+                                          const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
+                                          const std::vector<double>& dist, double gap_factor, const std::vector<char>& reached,
+                                          int threads);
 
 }  // namespace lsr::detail
