@@ -29,7 +29,7 @@ constexpr int kSidePasses = 16;
 constexpr std::size_t kGateStride = 8;
 // Path lengths from the walls to a point's two sides closer than this share of their sum say
 // nothing of which side is out: measured on a 20k torus with 4 holes (noise 0.25%), 2,030 of
-// the 2,052 points the path rule orients inwards lie below 0.2, 6,445 of 17,948 right ones.
+// the 2,052 points the path rule orients inwards lie below 0.2, and 6,443 of the 17,948 right ones.
 constexpr double kAmbiguousPaths = 0.2;
 // The pocket's median winding number above which the data are closed up to holes: 1.017-1.033
 // on the i.i.d. corpus with 4 holes (11 shapes), 0.70-0.90 under open undersides (11 shapes
