@@ -12,6 +12,15 @@
 namespace lsr {
 namespace {
 
+// 6 views of 40 lines x 400 samples each (10:1 along / across), optionally from above only.
+ScannerSettings test_scanner(bool from_above) {
+  ScannerSettings s;
+  s.lines = 40;
+  s.samples_per_line = 400;
+  s.from_above = from_above;
+  return s;
+}
+
 SurfaceTopology scan_topology(const std::string& shape, const ScannerSettings& settings) {
   const SampledShape scan = simulate_scan(make_test_shape(shape), settings, 2011);
   const ReconstructionResult<3> r = reconstruct<3>(scan.points);
@@ -22,9 +31,7 @@ SurfaceTopology scan_topology(const std::string& shape, const ScannerSettings& s
 // 0.002 rad and 0.2% of the diagonal: before the scan-line rule the torus came out of genus
 // 263, the sphere in 5 parts (60 x 600 lines).
 TEST(ScanReconstruction, AScannedTorusAndTwoSpheresKeepTheirTopology) {
-  ScannerSettings s;
-  s.lines = 40;
-  s.samples_per_line = 400;
+  const ScannerSettings s = test_scanner(false);
   const SurfaceTopology torus = scan_topology("torus", s);
   EXPECT_TRUE(torus.watertight);
   EXPECT_EQ(torus.genus, std::vector<int>{1});
@@ -34,10 +41,7 @@ TEST(ScanReconstruction, AScannedTorusAndTwoSpheresKeepTheirTopology) {
 }
 
 TEST(ScanReconstruction, AnUndersideNoViewSawIsClosed) {
-  ScannerSettings s;
-  s.lines = 40;
-  s.samples_per_line = 400;
-  s.from_above = true;
+  const ScannerSettings s = test_scanner(true);
   const SurfaceTopology bunny = scan_topology("bunny", s);
   EXPECT_TRUE(bunny.watertight);
   EXPECT_EQ(bunny.genus, std::vector<int>{0});
@@ -47,10 +51,7 @@ TEST(ScanReconstruction, AnUndersideNoViewSawIsClosed) {
 // their walls from both sides: before the open sides were closed (open_side_closure.h) the
 // sphere came out of genus 3 and the thin-walled cup of genus 4.
 TEST(ScanReconstruction, AnOpenUndersideClosesWithoutTunnels) {
-  ScannerSettings s;
-  s.lines = 40;
-  s.samples_per_line = 400;
-  s.from_above = true;
+  const ScannerSettings s = test_scanner(true);
   for (const char* shape : {"sphere", "cup"}) {
     const SurfaceTopology t = scan_topology(shape, s);
     EXPECT_TRUE(t.watertight) << shape;
@@ -63,10 +64,7 @@ TEST(ScanReconstruction, AnOpenUndersideClosesWithoutTunnels) {
 // (one component here; genus 9 at 60 x 600 lines). The open sides are now found on a flood the
 // discs do not stop (start_fields.cpp).
 TEST(ScanReconstruction, UndersidesTheDiscsSpanAreClosedToo) {
-  ScannerSettings s;
-  s.lines = 40;
-  s.samples_per_line = 400;
-  s.from_above = true;
+  const ScannerSettings s = test_scanner(true);
   const SurfaceTopology spheres = scan_topology("two-spheres", s);
   EXPECT_TRUE(spheres.watertight);
   EXPECT_EQ(spheres.genus, (std::vector<int>{0, 0}));
