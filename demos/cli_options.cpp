@@ -115,7 +115,7 @@ Cli parse(int argc, char** argv) {
   line.group("resources")
       .number("threads", "N", s.limits.threads, 0, 1024, "0 = all cores")
       .number("max-memory", "GIB", s.limits.max_memory / double(1 << 30), 0, 1e5, false,
-              "refuse clouds and meshes predicted to need more; 0 = min(4, half the machine's memory)",
+              "refuse clouds and meshes predicted to need more; 0 = half the machine's memory",
               [&](double gib) { s.limits.max_memory = gib * double(1 << 30); })
       .number("max-mesh-vertices", "N", s.limits.max_vertices, 0, 2e9, "refuse larger meshes; 0 = from --max-memory");
   const std::vector<std::string> positional = line.parse(argc, argv, 1, 2, "INPUT OUTPUT (or --demo SHAPE OUTPUT)");

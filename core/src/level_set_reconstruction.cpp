@@ -41,6 +41,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const Progress progress(callback);
 
   // 1. The data, normalised: distinct finite points in the unit box, along a Z-order curve.
+  progress.update("unit box", -1.0);
   r.input_points = input.size();
   DataPoints<D> in = distinct_finite_points(input);
   r.skipped_points = input.size() - in.finite.size();
@@ -58,14 +59,14 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // unless asked for, every point does.
   const bool rims_only = D == 3;
   const HeightFieldsAt fields = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields);
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
     require_spanning(in.points);
     box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(in.points));
-    sampling = estimate_local_sampling(data, o.limits.threads, fields);
+    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
   }
   const double spacing = median(sampling.spacing);
   r.noise = median(sampling.noise) / box.scale();
@@ -139,7 +140,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.limits.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads);
+    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
     attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
     clock.end("fit");

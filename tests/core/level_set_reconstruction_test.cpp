@@ -20,6 +20,9 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace lsr {
 namespace {
@@ -318,6 +321,31 @@ TEST(LevelSetReconstruction, CancelReturnsACleanStatus) {
   const auto early = reconstruct<2>(data, o, [](const std::string&, double) { return false; });
   EXPECT_EQ(early.status, ReconstructionStatus::cancelled);
   EXPECT_TRUE(early.surface.vertices.empty());
+}
+
+// The stages that take minutes at 10M points (preparing the points, their sampling, the fits)
+// report while they run, so that a caller sees them and can stop them there.
+TEST(LevelSetReconstruction, LongStagesReportAndCanBeCancelled) {
+  const Points<3> data = Sphere{Vec<3>(0, 0, 0), 1.0}.sample(3000);
+  std::vector<std::pair<std::string, double>> calls;
+  const auto r = reconstruct<3>(data, {}, [&](const std::string& stage, double fraction) {
+    calls.emplace_back(stage, fraction);
+    return true;
+  });
+  ASSERT_EQ(r.status, ReconstructionStatus::converged);
+  std::vector<double> fit;
+  for (const auto& [stage, fraction] : calls) {
+    if (stage == "fit" && fraction >= 0.0) fit.push_back(fraction);
+  }
+  ASSERT_FALSE(fit.empty());
+  EXPECT_TRUE(std::is_sorted(fit.begin(), fit.end()));
+  EXPECT_EQ(fit.back(), 1.0);
+  for (const std::string stop : {"unit box", "sampling", "fit"}) {
+    EXPECT_TRUE(std::any_of(calls.begin(), calls.end(), [&](const auto& c) { return c.first == stop; })) << stop;
+    const auto cancelled = reconstruct<3>(data, {}, [&](const std::string& stage, double) { return stage != stop; });
+    EXPECT_EQ(cancelled.status, ReconstructionStatus::cancelled) << stop;
+    EXPECT_TRUE(cancelled.surface.vertices.empty()) << stop;
+  }
 }
 
 TEST(LevelSetReconstruction, IsDeterministic) {

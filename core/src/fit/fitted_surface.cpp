@@ -145,17 +145,19 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
 
 template <int D>
 QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& point_scale, int threads) {
+                                const std::vector<double>& point_scale, int threads, const Progress& progress) {
   // Both read the same neighbours (freed before the blends).
   const int k = std::min<int>(QuadricImplicit<D>::kFitNeighbours, int(data.points().size()));
   LargeVector<Index> nearest;
   data.query_k(data.points(), k, nearest, threads);
   const std::vector<double> fit_noise = residual_noise(data.points(), normals, nearest, k, threads);
-  return QuadricImplicit<D>(data, normals, point_scale, fit_noise, threads, &nearest);
+  return QuadricImplicit<D>(data, normals, point_scale, fit_noise, threads, &nearest, progress);
 }
 
-template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
-template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
+template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int,
+                                            const Progress&);
+template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int,
+                                            const Progress&);
 template void attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<2>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,

@@ -31,6 +31,6 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
 /// PCA's thickness also counts.
 template <int D>
 QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& point_scale, int threads);
+                                const std::vector<double>& point_scale, int threads, const Progress& progress = Progress());
 
 }  // namespace lsr::detail

@@ -46,7 +46,7 @@ Eigen::Matrix<double, D, D> fit_frame(const Vec<D>& n) {
 template <int D>
 QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals,
                                     std::vector<double> spacing, const std::vector<double>& noise, int threads,
-                                    const LargeVector<Index>* given)
+                                    const LargeVector<Index>* given, const Progress& progress)
     : data_(data), spacing_(std::move(spacing)), blend_width2_(spacing_.size()), fits_(data.points().size()) {
   // Read by every blend, twelve times per query: computed once.
   for (std::size_t i = 0; i < spacing_.size(); ++i) blend_width2_[i] = std::pow(std::max(spacing_[i], 1e-12), 2);
@@ -70,91 +70,99 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
   LargeVector<Index> queried;
   if (!given) data.query_k(p, k_clean, queried, threads);
   const LargeVector<Index>& nearest = given ? *given : queried;
-  std::vector<int> class_of(p.size(), -1);
   std::vector<int> class_k;
   for (int k = k_clean; k < k_max;) {
     k = std::min(k_max, k + std::max(1, k / 4));
     class_k.push_back(k);
   }
-  std::vector<Points<D>> members(class_k.size());
-  std::vector<LargeVector<Index>> wide(class_k.size());
-  std::vector<Index> row(p.size(), -1);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (size[i] <= k_clean) continue;
-    const int c = int(std::lower_bound(class_k.begin(), class_k.end(), size[i]) - class_k.begin());
-    class_of[i] = c;
-    row[i] = Index(members[std::size_t(c)].size());
-    members[std::size_t(c)].push_back(p[i]);
-  }
-  for (std::size_t c = 0; c < class_k.size(); ++c) {
-    if (!members[c].empty()) data.query_k(members[c], class_k[c], wide[c], threads);
-  }
+  const auto class_of = [&](std::size_t i) {
+    return size[i] <= k_clean ? -1 : int(std::lower_bound(class_k.begin(), class_k.end(), size[i]) - class_k.begin());
+  };
   const double straddle = straddle_radius<D>();
-#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
-  for (long i = 0; i < n; ++i) {
-    Fit& f = fits_[i];
-    f.frame = fit_frame<D>(normals[i]);
-    const int k = size[i];
-    const int c = class_of[i];
-    const Index* near = c >= 0 ? &wide[std::size_t(c)][std::size_t(row[i]) * std::size_t(class_k[std::size_t(c)])]
-                               : &nearest[std::size_t(i) * k_clean];
-    double reach = 0.0;
-    for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
-    f.reach = std::max(reach, 1e-12);
-    f.fade_width2 = std::pow(2.0 * f.reach, 2);
-    const double r2 = std::pow(1.2 * f.reach, 2);
-    // Where the other side of a thin part lies among the PCA neighbours, the normals straddle
-    // both sides and tell no crease: plain weights there (measured: the normals' weights opened
-    // two handles in the 200k bunny's thin ears).
-    double inverse_width = 1.0 / width[i];
-    for (int j = 0; j < k; ++j) {
-      if (normals[near[j]].dot(normals[i]) <= 0.0 && (p[near[j]] - p[i]).norm() < straddle * spacing_[i]) {
-        inverse_width = 0.0;
-      }
+  // Block by block (the points are in Z-order, so a block is a patch): the wide lists of a whole
+  // scan would not fit (a 10M-point line scan, most of it noisy: 8.8 GB more at the peak).
+  for (long begin = 0; begin < n; begin += kFitBlock) {
+    progress.update("fit", double(begin) / double(n));
+    const long end = std::min(n, begin + kFitBlock);
+    std::vector<Points<D>> members(class_k.size());
+    std::vector<LargeVector<Index>> wide(class_k.size());
+    std::vector<Index> row(std::size_t(end - begin), -1);
+    for (long i = begin; i < end; ++i) {
+      const int c = class_of(std::size_t(i));
+      if (c < 0) continue;
+      row[std::size_t(i - begin)] = Index(members[std::size_t(c)].size());
+      members[std::size_t(c)].push_back(p[std::size_t(i)]);
     }
-    const auto fit = [&](auto& equations) {
-      constexpr int P = std::decay_t<decltype(equations.atz)>::RowsAtCompileTime;
+    for (std::size_t c = 0; c < class_k.size(); ++c) {
+      if (!members[c].empty()) data.query_k(members[c], class_k[c], wide[c], threads);
+    }
+#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
+    for (long i = begin; i < end; ++i) {
+      Fit& f = fits_[i];
+      f.frame = fit_frame<D>(normals[i]);
+      const int k = size[i];
+      const int c = class_of(std::size_t(i));
+      const Index* near = c >= 0 ? &wide[std::size_t(c)][std::size_t(row[std::size_t(i - begin)]) * std::size_t(class_k[std::size_t(c)])]
+                                 : &nearest[std::size_t(i) * k_clean];
+      double reach = 0.0;
+      for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
+      f.reach = std::max(reach, 1e-12);
+      f.fade_width2 = std::pow(2.0 * f.reach, 2);
+      const double r2 = std::pow(1.2 * f.reach, 2);
+      // Where the other side of a thin part lies among the PCA neighbours, the normals straddle
+      // both sides and tell no crease: plain weights there (measured: the normals' weights opened
+      // two handles in the 200k bunny's thin ears).
+      double inverse_width = 1.0 / width[i];
       for (int j = 0; j < k; ++j) {
-        const double cosine = normals[near[j]].dot(normals[i]);
-        if (cosine <= 0.0) continue;  // the other side of a thin part
-        const Vec<D> local = f.frame * (p[near[j]] - p[i]);
-        const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) * inverse_width);
-        equations.add(w, height_monomials<D, P>(local.template head<D - 1>()), local[D - 1]);
-      }
-      equations.regularize(f.reach);
-    };
-    Eigen::Matrix<double, kQuadricTerms<D>, 1> x;
-    bool fitted = false;
-    if constexpr (D == 3) {
-      if (k >= kCubicNeighbours) {
-        HeightFieldEquations<D, kCubicTerms> e;
-        fit(e);
-        // Where the neighbours lie to one side (a hole's rim, a scan's border), the cubic terms
-        // are not held on the other, over which they extrapolate (measured: a bump 10 spacings
-        // over a hole of the noisy holey linked rings, Hausdorff distance 9.5e-3 -> 2.1e-2).
-        // The weighted centroid (sum w t / sum w, ata's first row) tells it.
-        const double offset = std::hypot(e.ata(0, 1), e.ata(0, 2)) / e.ata(0, 0);
-        if (offset < kCubicBalance * f.reach) {
-          const CubicSelection selected = select_cubic(e, noise.empty() ? 0.0 : noise[i]);
-          x = selected.quadric;
-          f.cubic = selected.cubic;
-          fitted = true;
+        if (normals[near[j]].dot(normals[i]) <= 0.0 && (p[near[j]] - p[i]).norm() < straddle * spacing_[i]) {
+          inverse_width = 0.0;
         }
       }
-    }
-    if (!fitted) {
-      HeightFieldEquations<D, kQuadricTerms<D>> e;
-      fit(e);
-      x = e.solve();
-    }
-    f.c0 = x[0];
-    f.g = x.template segment<D - 1>(1);
-    if constexpr (D == 2) {
-      f.h(0, 0) = x[2];
-    } else {
-      f.h << x[3], x[4], x[4], x[5];
+      const auto fit = [&](auto& equations) {
+        constexpr int P = std::decay_t<decltype(equations.atz)>::RowsAtCompileTime;
+        for (int j = 0; j < k; ++j) {
+          const double cosine = normals[near[j]].dot(normals[i]);
+          if (cosine <= 0.0) continue;  // the other side of a thin part
+          const Vec<D> local = f.frame * (p[near[j]] - p[i]);
+          const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) * inverse_width);
+          equations.add(w, height_monomials<D, P>(local.template head<D - 1>()), local[D - 1]);
+        }
+        equations.regularize(f.reach);
+      };
+      Eigen::Matrix<double, kQuadricTerms<D>, 1> x;
+      bool fitted = false;
+      if constexpr (D == 3) {
+        if (k >= kCubicNeighbours) {
+          HeightFieldEquations<D, kCubicTerms> e;
+          fit(e);
+          // Where the neighbours lie to one side (a hole's rim, a scan's border), the cubic terms
+          // are not held on the other, over which they extrapolate (measured: a bump 10 spacings
+          // over a hole of the noisy holey linked rings, Hausdorff distance 9.5e-3 -> 2.1e-2).
+          // The weighted centroid (sum w t / sum w, ata's first row) tells it.
+          const double offset = std::hypot(e.ata(0, 1), e.ata(0, 2)) / e.ata(0, 0);
+          if (offset < kCubicBalance * f.reach) {
+            const CubicSelection selected = select_cubic(e, noise.empty() ? 0.0 : noise[i]);
+            x = selected.quadric;
+            f.cubic = selected.cubic;
+            fitted = true;
+          }
+        }
+      }
+      if (!fitted) {
+        HeightFieldEquations<D, kQuadricTerms<D>> e;
+        fit(e);
+        x = e.solve();
+      }
+      f.c0 = x[0];
+      f.g = x.template segment<D - 1>(1);
+      if constexpr (D == 2) {
+        f.h(0, 0) = x[2];
+      } else {
+        f.h << x[3], x[4], x[4], x[5];
+      }
     }
   }
+  progress.update("fit", 1.0);
 }
 
 template <int D>

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "geometry/nearest_point_index.h"
+#include "lsrecon/core/progress.h"
 
 #include <vector>
 
@@ -43,6 +44,9 @@ class QuadricImplicit {
   /// reach (uniform weights), inside the data within about 0.03 of it (160 random neighbours).
   static constexpr double kCubicBalance = 0.2;
   static constexpr int kBlendCentres = D == 2 ? 4 : 12;    ///< fits blended at a query
+  /// Points fitted per block: the wide neighbour lists are held for one block at a time (at
+  /// most 42 MB), and progress is reported (and cancellation checked) between blocks.
+  static constexpr long kFitBlock = 1 << 16;
   /// Normal width of a fit's neighbours on clean data, widened on noisy data by the factor
   /// sqrt(1 + (sigma_i / (0.05 s_i))^2) that widens the neighbourhood (at most 90 degrees).
   /// Measured on the 20k bunny (Chamfer / diagonal): 5 degrees 2.39e-4, 7: 2.43e-4, 10: 2.58e-4,
@@ -61,9 +65,10 @@ class QuadricImplicit {
   /// @param threads 0 for all cores
   /// @param nearest the min(kFitNeighbours, #N) nearest of each point, as query_k gives them,
   /// when the caller has them already (residual_noise uses the same); null: queried here
+  /// @param progress stage "fit", the fraction of the points fitted; throws Cancelled
   QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals, std::vector<double> spacing,
                   const std::vector<double>& noise = {}, int threads = 0,
-                  const LargeVector<Index>* nearest = nullptr);
+                  const LargeVector<Index>* nearest = nullptr, const Progress& progress = Progress());
 
   /// @brief F at each query (#Q) and, if asked, the unit outward normal of the blended fits.
   void evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal = nullptr,

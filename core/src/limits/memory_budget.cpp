@@ -15,7 +15,7 @@ namespace lsr::detail {
 double memory_budget(const ReconstructionOptions& o) {
   if (o.limits.max_memory > 0.0) return o.limits.max_memory;
   const double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  return std::min(4.0 * (1 << 30), 0.5 * physical);
+  return 0.5 * physical;
 }
 
 std::string gib(double bytes) {

@@ -18,7 +18,7 @@ constexpr double kBytesPerPoint = 1000.0;
 template <int D>
 constexpr double kBytesPerVertex = D == 3 ? 1300.0 : 2000.0;
 
-// max_memory, or min(4 GiB, half the physical memory).
+// max_memory, or half the physical memory (a 10M-point cloud needs about 8 GiB).
 double memory_budget(const ReconstructionOptions& o);
 
 std::string gib(double bytes);

@@ -50,7 +50,7 @@ void check_options(const ReconstructionOptions& o) {
     bad("outlier_factor must be 0 (keep every point) or in [1, 1000]", "use 3");
   }
   if (o.limits.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from max_memory)");
-  if (!(o.limits.max_memory >= 0.0 && o.limits.max_memory < 1e15)) bad("max_memory must be >= 0 bytes and finite", "use 0 (min(4 GiB, half the memory))");
+  if (!(o.limits.max_memory >= 0.0 && o.limits.max_memory < 1e15)) bad("max_memory must be >= 0 bytes and finite", "use 0 (half the physical memory)");
   if (!(o.evolution.solver_tolerance > 0.0 && o.evolution.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");
   if (o.start.initial_front != InitialFront::inside && o.evolution.alpha < 0.0) {
     bad("alpha < 0 makes a front that encloses the data grow away from it",

@@ -282,13 +282,15 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
 
 template <int D>
 void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Index>& neighbours, int k, int threads,
-                         const std::vector<double>& elongation, LocalSampling<D>& s) {
+                         const std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress) {
   constexpr int wide = LocalSampling<D>::kHoleNeighbours;
   const Points<D>& p = data.points();
   if (p.size() < std::size_t(wide)) return;
   if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads)) return;
+  progress.update("sampling", -1.0);
   LargeVector<Index> nearest;
   data.query_k(p, wide, nearest, threads);
+  progress.update("sampling", -1.0);
   std::vector<double> hole(p.size()), noise(p.size());
   const long n = long(p.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -369,13 +371,15 @@ double median(std::vector<double> values) {
 }
 
 template <int D>
-LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, HeightFieldsAt height_fields) {
+LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, HeightFieldsAt height_fields,
+                                         const Progress& progress) {
   constexpr int k = LocalSampling<D>::kNeighbours;
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
   LocalSampling<D> s;
   LargeVector<Index> neighbours;
   data.query_k(p, k, neighbours, t);
+  progress.update("sampling", -1.0);
   const long n = long(p.size());
   std::vector<double> spacing(p.size()), noise(p.size()), elongation(p.size());
   const bool rims = height_fields == HeightFieldsAt::rims;
@@ -392,8 +396,10 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   }
   s.spacing = neighbourhood_median(spacing, neighbours, k, t);
   s.noise = neighbourhood_median(noise, neighbours, k, t);
-  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s);
+  progress.update("sampling", -1.0);
+  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress);
   if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t);
+  progress.update("sampling", -1.0);
   // 48 bytes a point in 3D: not even allocated for a closed cloud without rims.
   if (height_fields == HeightFieldsAt::all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
     s.height_fields.resize(p.size());
@@ -407,7 +413,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   return s;
 }
 
-template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt);
-template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt);
+template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&);
+template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&);
 
 }  // namespace lsr

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "geometry/nearest_point_index.h"
+#include "lsrecon/core/progress.h"
 
 #include <array>
 #include <vector>
@@ -86,9 +87,12 @@ enum class HeightFieldsAt { none, rims, all };
 /// @param threads 0 for all cores
 /// @param height_fields where to fit height_fields (only spanning holes needs them; at every
 /// point they took 0.24 s of the 0.54 s of the sampling stage on a 200k-point torus)
+/// @param progress stage "sampling", fraction unknown, between the passes over the points
+/// (each up to a minute at 10M points); throws Cancelled
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads = 0,
-                                         HeightFieldsAt height_fields = HeightFieldsAt::none);
+                                         HeightFieldsAt height_fields = HeightFieldsAt::none,
+                                         const Progress& progress = Progress());
 
 /// @brief The median of values (copied; empty gives 0).
 double median(std::vector<double> values);

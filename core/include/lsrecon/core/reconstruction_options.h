@@ -178,7 +178,7 @@ struct OutputOptions {
 
 /// @brief What the run may take.
 struct LimitOptions {
-  /// Memory the run may take, in bytes; 0: min(4 GiB, half the physical memory). Clouds and
+  /// Memory the run may take, in bytes; 0: half the physical memory. Clouds and
   /// meshes predicted to need more are refused before they are built (lsr::ResourceLimit,
   /// lsr::MeshTooLarge), at the measured peak rounded up: 1 KB per input point, 1.3 KB per 3D
   /// mesh vertex, 2 KB per 2D one (4 GiB: about 3.3 million 3D mesh vertices).
