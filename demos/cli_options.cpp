@@ -66,7 +66,7 @@ Cli parse(int argc, char** argv) {
       .number("points", "N", c.points, 4, 5e7, "points of a --demo cloud")
       .number("dim", "D", c.dim, 2, 3, "2 or 3; 0 = 2 if the input is planar, else 3")
       .text("report", "FILE.json", c.report, "write the figures of the run as JSON")
-      .text("save-points", "FILE.xyz", c.save_points, "also write the input points (a --demo cloud) as text")
+      .text("save-points", "FILE", c.save_points, "also write the input points (a --demo cloud): FILE.ply binary, else text")
       .text("volume-mesh", "FILE", c.volume_mesh,
             "also write meshes of the inside (label 1) and the outside (2) of the result within the box, "
             "sharing its surface (label 10; box walls 20): .mesh (Medit), .msh (Gmsh 2.2), .vtu")

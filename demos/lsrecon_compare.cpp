@@ -66,7 +66,7 @@ struct Settings {
   double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
   int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
-  bool save_points = false;  ///< also write each generated cloud as DIR/<case>-points.xyz
+  bool save_points = false;  ///< also write each generated cloud as DIR/<case>-points.ply
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -168,7 +168,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
     return 0;
   }
-  if (s.save_points && s.input.empty()) lsr::adapters::write_points(s.out + "/" + case_name + "-points.xyz", c.points);
+  if (s.save_points && s.input.empty()) lsr::adapters::write_points(s.out + "/" + case_name + "-points.ply", c.points);
   lsr::demos::Stopwatch clock;
   const Produced p = run_method(method, c, {s.hole_radius, s.max_resolution});
   const double seconds = clock.lap();
@@ -326,7 +326,7 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .text("input", "FILE", s.input, "a cloud of yours instead: time, memory and topology only (no ground truth)")
       .text("methods", "A,B,..", methods, "reconstructors, some of: " + join(kMethods, " "))
       .text("out", "DIR", s.out, "where results and meshes go")
-      .flag("save-points", s.save_points, "also write each generated cloud as DIR/CASE-points.xyz (to rerun it with lsrecon)")
+      .flag("save-points", s.save_points, "also write each generated cloud as DIR/CASE-points.ply (binary doubles; to rerun it with lsrecon)")
       .number("repeat", "N", s.repeat, 1, 99,
               "runs per case and method, the methods taking turns; reports the run of median time "
               "(this machine's times vary 10-20% between runs)");

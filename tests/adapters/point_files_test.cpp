@@ -2,6 +2,7 @@
 /// @file point_files_test.cpp
 /// @brief lsrecon's own PCD and PLY point readers: every encoding and numeric type, headers
 /// that lie or continue past DATA, truncation, and every mesh format lsrecon writes read back.
+#include "lsrecon/adapters/curve_files.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/testdata/analytic_shapes.h"
@@ -258,6 +259,19 @@ TEST_F(PointFiles, PlyThatLiesOrEndsEarlyIsRefused) {
 }
 
 // What lsrecon writes, lsrecon reads: its double-precision PLY among them.
+// Saved points come back bit for bit: binary doubles in a .ply, 17 significant digits in text.
+TEST_F(PointFiles, SavedPointsAreReadBackExactly) {
+  const Points<3> points = {Vec<3>(1.0 / 3.0, -2e-300, 7.0), Vec<3>(1e6 + 0.1, std::nextafter(1.0, 2.0), -0.0),
+                            Vec<3>(M_PI, -M_E, 1e300)};
+  for (const std::string name : {"p.ply", "p.xyz"}) {
+    const std::string path = (dir_ / name).string();
+    write_points(path, points);
+    const PointFile read = read_point_file(path);
+    ASSERT_EQ(read.points.size(), points.size()) << name;
+    for (std::size_t i = 0; i < points.size(); ++i) EXPECT_EQ(read.points[i], points[i]) << name << " " << i;
+  }
+}
+
 TEST_F(PointFiles, EveryMeshFormatLsreconWritesIsReadBack) {
   LevelSetMesh<3> tetrahedron;
   tetrahedron.vertices = {Vec<3>(1.0 / 3.0, 0, 0), Vec<3>(1e6 + 0.1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};

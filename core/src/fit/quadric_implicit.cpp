@@ -78,7 +78,6 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
   const auto class_of = [&](std::size_t i) {
     return size[i] <= k_clean ? -1 : int(std::lower_bound(class_k.begin(), class_k.end(), size[i]) - class_k.begin());
   };
-  const double straddle = straddle_radius<D>();
   // Block by block (the points are in Z-order, so a block is a patch): the wide lists of a whole
   // scan would not fit (a 10M-point line scan, most of it noisy: 8.8 GB more at the peak).
   for (long begin = 0; begin < n; begin += kFitBlock) {
@@ -98,71 +97,79 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
     }
 #pragma omp parallel for schedule(static) num_threads(thread_count(threads))
     for (long i = begin; i < end; ++i) {
-      Fit& f = fits_[i];
-      f.frame = fit_frame<D>(normals[i]);
-      const int k = size[i];
       const int c = class_of(std::size_t(i));
       const Index* near = c >= 0 ? &wide[std::size_t(c)][std::size_t(row[std::size_t(i - begin)]) * std::size_t(class_k[std::size_t(c)])]
                                  : &nearest[std::size_t(i) * k_clean];
-      double reach = 0.0;
-      for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
-      f.reach = std::max(reach, 1e-12);
-      f.fade_width2 = std::pow(2.0 * f.reach, 2);
-      const double r2 = std::pow(1.2 * f.reach, 2);
-      // Where the other side of a thin part lies among the PCA neighbours, the normals straddle
-      // both sides and tell no crease: plain weights there (measured: the normals' weights opened
-      // two handles in the 200k bunny's thin ears).
-      double inverse_width = 1.0 / width[i];
-      for (int j = 0; j < k; ++j) {
-        if (normals[near[j]].dot(normals[i]) <= 0.0 && (p[near[j]] - p[i]).norm() < straddle * spacing_[i]) {
-          inverse_width = 0.0;
-        }
-      }
-      const auto fit = [&](auto& equations) {
-        constexpr int P = std::decay_t<decltype(equations.atz)>::RowsAtCompileTime;
-        for (int j = 0; j < k; ++j) {
-          const double cosine = normals[near[j]].dot(normals[i]);
-          if (cosine <= 0.0) continue;  // the other side of a thin part
-          const Vec<D> local = f.frame * (p[near[j]] - p[i]);
-          const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) * inverse_width);
-          equations.add(w, height_monomials<D, P>(local.template head<D - 1>()), local[D - 1]);
-        }
-        equations.regularize(f.reach);
-      };
-      Eigen::Matrix<double, kQuadricTerms<D>, 1> x;
-      bool fitted = false;
-      if constexpr (D == 3) {
-        if (k >= kCubicNeighbours) {
-          HeightFieldEquations<D, kCubicTerms> e;
-          fit(e);
-          // Where the neighbours lie to one side (a hole's rim, a scan's border), the cubic terms
-          // are not held on the other, over which they extrapolate (measured: a bump 10 spacings
-          // over a hole of the noisy holey linked rings, Hausdorff distance 9.5e-3 -> 2.1e-2).
-          // The weighted centroid (sum w t / sum w, ata's first row) tells it.
-          const double offset = std::hypot(e.ata(0, 1), e.ata(0, 2)) / e.ata(0, 0);
-          if (offset < kCubicBalance * f.reach) {
-            const CubicSelection selected = select_cubic(e, noise.empty() ? 0.0 : noise[i]);
-            x = selected.quadric;
-            f.cubic = selected.cubic;
-            fitted = true;
-          }
-        }
-      }
-      if (!fitted) {
-        HeightFieldEquations<D, kQuadricTerms<D>> e;
-        fit(e);
-        x = e.solve();
-      }
-      f.c0 = x[0];
-      f.g = x.template segment<D - 1>(1);
-      if constexpr (D == 2) {
-        f.h(0, 0) = x[2];
-      } else {
-        f.h << x[3], x[4], x[4], x[5];
-      }
+      fits_[std::size_t(i)] = fit_point(p, normals, std::size_t(i), near, size[std::size_t(i)], width[std::size_t(i)],
+                                        noise.empty() ? 0.0 : noise[std::size_t(i)]);
     }
   }
   progress.update("fit", 1.0);
+}
+
+template <int D>
+auto QuadricImplicit<D>::fit_point(const Points<D>& p, const Points<D>& normals, std::size_t i, const Index* near, int k,
+                                   double width, double noise) const -> Fit {
+  Fit f;
+  f.frame = fit_frame<D>(normals[i]);
+  double reach = 0.0;
+  for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
+  f.reach = std::max(reach, 1e-12);
+  f.fade_width2 = std::pow(2.0 * f.reach, 2);
+  const double r2 = std::pow(1.2 * f.reach, 2);
+  // Where the other side of a thin part lies among the PCA neighbours, the normals straddle
+  // both sides and tell no crease: plain weights there (measured: the normals' weights opened
+  // two handles in the 200k bunny's thin ears).
+  double inverse_width = 1.0 / width;
+  const double straddle = straddle_radius<D>() * spacing_[i];
+  for (int j = 0; j < k; ++j) {
+    if (normals[near[j]].dot(normals[i]) <= 0.0 && (p[near[j]] - p[i]).norm() < straddle) {
+      inverse_width = 0.0;
+    }
+  }
+  const auto fit = [&](auto& equations) {
+    constexpr int P = std::decay_t<decltype(equations.atz)>::RowsAtCompileTime;
+    for (int j = 0; j < k; ++j) {
+      const double cosine = normals[near[j]].dot(normals[i]);
+      if (cosine <= 0.0) continue;  // the other side of a thin part
+      const Vec<D> local = f.frame * (p[near[j]] - p[i]);
+      const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) * inverse_width);
+      equations.add(w, height_monomials<D, P>(local.template head<D - 1>()), local[D - 1]);
+    }
+    equations.regularize(f.reach);
+  };
+  Eigen::Matrix<double, kQuadricTerms<D>, 1> x;
+  bool fitted = false;
+  if constexpr (D == 3) {
+    if (k >= kCubicNeighbours) {
+      HeightFieldEquations<D, kCubicTerms> e;
+      fit(e);
+      // Where the neighbours lie to one side (a hole's rim, a scan's border), the cubic terms
+      // are not held on the other, over which they extrapolate (measured: a bump 10 spacings
+      // over a hole of the noisy holey linked rings, Hausdorff distance 9.5e-3 -> 2.1e-2).
+      // The weighted centroid (sum w t / sum w, ata's first row) tells it.
+      const double offset = std::hypot(e.ata(0, 1), e.ata(0, 2)) / e.ata(0, 0);
+      if (offset < kCubicBalance * f.reach) {
+        const CubicSelection selected = select_cubic(e, noise);
+        x = selected.quadric;
+        f.cubic = selected.cubic;
+        fitted = true;
+      }
+    }
+  }
+  if (!fitted) {
+    HeightFieldEquations<D, kQuadricTerms<D>> e;
+    fit(e);
+    x = e.solve();
+  }
+  f.c0 = x[0];
+  f.g = x.template segment<D - 1>(1);
+  if constexpr (D == 2) {
+    f.h(0, 0) = x[2];
+  } else {
+    f.h << x[3], x[4], x[4], x[5];
+  }
+  return f;
 }
 
 template <int D>

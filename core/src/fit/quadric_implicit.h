@@ -93,6 +93,9 @@ class QuadricImplicit {
     double reach = 0.0;  ///< radius of the neighbourhood fitted
     double fade_width2 = 0.0;  ///< (2 reach)^2: the curvature term fades beyond 2 reach
   };
+  /// The fit of point i (width: 1 - cos of its normal width) from its k nearest.
+  Fit fit_point(const Points<D>& p, const Points<D>& normals, std::size_t i, const Index* near, int k, double width,
+                double noise) const;
   double fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const;
   /// F (and the normal) at each query from the given blend centres (kBlendCentres per query).
   void blend(const Points<D>& queries, const LargeVector<Index>& nearest, int k, std::vector<double>& value,
