@@ -111,7 +111,8 @@ template <int D>
 auto QuadricImplicit<D>::fit_point(const Points<D>& p, const Points<D>& normals, std::size_t i, const Index* near, int k,
                                    double width, double noise) const -> Fit {
   Fit f;
-  f.frame = fit_frame<D>(normals[i]);
+  f.normal = normals[i];
+  const Eigen::Matrix<double, D, D> frame = fit_frame<D>(f.normal);
   double reach = 0.0;
   for (int j = 0; j < k; ++j) reach = std::max(reach, (p[near[j]] - p[i]).norm());
   f.reach = std::max(reach, 1e-12);
@@ -132,7 +133,7 @@ auto QuadricImplicit<D>::fit_point(const Points<D>& p, const Points<D>& normals,
     for (int j = 0; j < k; ++j) {
       const double cosine = normals[near[j]].dot(normals[i]);
       if (cosine <= 0.0) continue;  // the other side of a thin part
-      const Vec<D> local = f.frame * (p[near[j]] - p[i]);
+      const Vec<D> local = frame * (p[near[j]] - p[i]);
       const double w = std::pow(1.0 - local.squaredNorm() / r2, 2) * std::exp(-(1.0 - cosine) * inverse_width);
       equations.add(w, height_monomials<D, P>(local.template head<D - 1>()), local[D - 1]);
     }
@@ -174,7 +175,8 @@ auto QuadricImplicit<D>::fit_point(const Points<D>& p, const Points<D>& normals,
 
 template <int D>
 double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const Vec<D>& x, Vec<D>* normal) const {
-  const Vec<D> local = f.frame * (x - centre);
+  const Eigen::Matrix<double, D, D> frame = fit_frame<D>(f.normal);
+  const Vec<D> local = frame * (x - centre);
   const Eigen::Matrix<double, D - 1, 1> t = local.template head<D - 1>();
   // Far along the tangent the quadric's extrapolation is not trusted: its curvature term fades
   // beyond twice the fitted neighbourhood (sampling holes are spanned by tangent planes).
@@ -195,7 +197,7 @@ double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const V
     Vec<D> n_local;
     n_local.template head<D - 1>() = -slope;
     n_local[D - 1] = 1.0;
-    *normal = f.frame.transpose() * n_local / norm;
+    *normal = frame.transpose() * n_local / norm;
   }
   return (local[D - 1] - height) / norm;
 }

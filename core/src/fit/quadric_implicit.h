@@ -83,7 +83,9 @@ class QuadricImplicit {
 
  private:
   struct Fit {
-    Eigen::Matrix<double, D, D> frame;  ///< rows: D-1 tangents, then the normal
+    /// the frame's normal: its rows (D-1 tangents, then the normal) are recomputed where a
+    /// blend reads it, 48 bytes less per point (0.5 GB at 10M points)
+    Vec<D> normal;
     double c0 = 0.0;
     Eigen::Matrix<double, D - 1, 1> g;
     Eigen::Matrix<double, D - 1, D - 1> h;
