@@ -194,21 +194,10 @@ std::vector<signed char> one_sided_points(const SimplexMesh<D>& mesh, const Near
 }
 
 template <int D>
-bool reached_from_both_sides(const SimplexMesh<D>& mesh, const NearestPointIndex<D>& data, const Points<D>& normals,
-                             const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
-                             const std::vector<double>& dist, double gap_factor, const std::vector<char>& reached, int threads) {
-  FloodSides<D> sides(mesh, data, normals, point_scale, vertex_scale, dist, gap_factor, reached, threads);
-  if (sides.empty()) return false;
-  OpenSides count;
-  sides.find({}, kGateStride);
-  return sides.count(kGateStride, count);
-}
-
-template <int D>
 OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,
                            const Points<D>& normals, const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
                            const std::vector<double>& dist, const std::vector<Index>& nearest, double gap_factor,
-                           std::vector<char>& reached, const std::vector<signed char>* disc_sides, int threads) {
+                           std::vector<char>& reached, const DiscSides& disc_sides, int threads) {
   OpenSides out;
   const Points<D>& points = data.points();
   const std::size_t nv = mesh.vertices.size(), np = points.size();
@@ -259,7 +248,7 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
     const auto last = std::size_t(knn[p * kSideNeighbours + kSideNeighbours - 1]);
     area[p] = kPi * (points[last] - points[p]).squaredNorm() / double(kSideNeighbours - 1);
   }
-  if (disc_sides && closed_up_to_holes(mesh, points, normals, outward, area, g_plus, g_minus, *disc_sides, reached, threads)) {
+  if (disc_sides && closed_up_to_holes(mesh, points, normals, outward, area, g_plus, g_minus, disc_sides(), reached, threads)) {
     out.seen_points = out.two_sided_points = 0;
     return out;
   }
@@ -292,12 +281,9 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
 template OpenSides close_open_sides<3>(const SimplexMesh<3>&, const VertexNeighbours&,
                                        const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,
                                        const Eigen::VectorXd&, const std::vector<double>&, const std::vector<Index>&, double,
-                                       std::vector<char>&, const std::vector<signed char>*, int);
+                                       std::vector<char>&, const DiscSides&, int);
 template std::vector<signed char> one_sided_points<3>(const SimplexMesh<3>&, const NearestPointIndex<3>&, const Points<3>&,
                                                       const std::vector<double>&, const Eigen::VectorXd&,
                                                       const std::vector<double>&, double, const std::vector<char>&, int);
-template bool reached_from_both_sides<3>(const SimplexMesh<3>&, const NearestPointIndex<3>&, const Points<3>&,
-                                         const std::vector<double>&, const Eigen::VectorXd&, const std::vector<double>&, double,
-                                         const std::vector<char>&, int);
 
 }  // namespace lsr::detail

@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <vector>
 
 namespace lsr::detail {
@@ -35,6 +36,10 @@ struct OpenSides {
   std::vector<char> kept;      ///< #V: held, or over the membrane: the front is kept, not fitted
 };
 
+/// @brief The points' sides a flood the tangent discs stop reached (one_sided_points), computed
+/// on demand; empty: none.
+using DiscSides = std::function<std::vector<signed char>()>;
+
 /// @brief Below this share of two-sided points among the points the flood reached the data are
 /// closed (thin parts and sampling gaps make a few): nothing is taken back.
 constexpr double kOpenSideShare = 0.05;
@@ -44,20 +49,14 @@ constexpr double kOpenSideShare = 0.05;
 /// @param normals the points' unoriented normals, `point_scale` their local scales
 /// @param vertex_scale #V the nearest point's scale, `dist` #V the distance to the data
 /// @param disc_sides when `reached` ignores the tangent discs: one_sided_points of the flood
-/// the discs stop; if the pocket is then the inside of data closed up to holes (its median
-/// winding number at least 0.95), nothing is taken back (the discs span the holes)
+/// the discs stop, asked for only past the gate; if the pocket is then the inside of data
+/// closed up to holes (its median winding number at least 0.95), nothing is taken back (the
+/// discs span the holes)
 template <int D>
 OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const NearestPointIndex<D>& data,
                            const Points<D>& normals, const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
                            const std::vector<double>& dist, const std::vector<Index>& nearest, double gap_factor,
-                           std::vector<char>& reached, const std::vector<signed char>* disc_sides, int threads);
-
-/// @brief close_open_sides's gate alone: kOpenSideShare or more of the points `reached` comes
-/// near are reached from both sides (3D).
-template <int D>
-bool reached_from_both_sides(const SimplexMesh<D>& mesh, const NearestPointIndex<D>& data, const Points<D>& normals,
-                             const std::vector<double>& point_scale, const Eigen::VectorXd& vertex_scale,
-                             const std::vector<double>& dist, double gap_factor, const std::vector<char>& reached, int threads);
+                           std::vector<char>& reached, const DiscSides& disc_sides, int threads);
 
 /// @brief Per point, +1 / -1 when `reached` comes near it along its normal / against it only,
 /// 0 when on both sides or neither (3D).

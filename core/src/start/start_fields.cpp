@@ -55,7 +55,7 @@ template <int D>
 void find_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& distance,
                      const Eigen::VectorXd& scale, double gap_factor, bool discs, const OpenSideInputs<D>& open,
                      std::vector<char>& reached, OpenSides& closed, int threads) {
-  const auto close = [&](std::vector<char>& flood, const std::vector<signed char>* disc_sides) {
+  const auto close = [&](std::vector<char>& flood, const DiscSides& disc_sides) {
     return close_open_sides(mesh, neighbours, open.data, open.normals, open.point_scale, scale, open.dist, open.nearest, gap_factor,
                             flood, disc_sides, threads);
   };
@@ -64,20 +64,18 @@ void find_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbo
     std::vector<char> passable(n);
     for (std::size_t v = 0; v < n; ++v) passable[v] = distance[Eigen::Index(v)] > gap_factor * scale[Eigen::Index(v)];
     std::vector<char> plain = flood_from_walls(mesh, passable);
-    if (reached_from_both_sides(mesh, open.data, open.normals, open.point_scale, scale, open.dist, gap_factor, plain, threads)) {
-      const std::vector<signed char> disc_sides =
-          one_sided_points(mesh, open.data, open.normals, open.point_scale, scale, open.dist, gap_factor, reached, threads);
-      const std::vector<char> before = plain;
-      closed = close(plain, &disc_sides);
-      if (!closed.held.empty()) {
-        for (std::size_t v = 0; v < n; ++v) {
-          if (before[v] && !plain[v]) reached[v] = 0;
-        }
-        return;
+    const std::vector<char> before = plain;
+    closed = close(plain, [&] {
+      return one_sided_points(mesh, open.data, open.normals, open.point_scale, scale, open.dist, gap_factor, reached, threads);
+    });
+    if (!closed.held.empty()) {
+      for (std::size_t v = 0; v < n; ++v) {
+        if (before[v] && !plain[v]) reached[v] = 0;
       }
+      return;
     }
   }
-  closed = close(reached, nullptr);  // without discs, or closed without them or up to holes
+  closed = close(reached, {});  // without discs, or closed without them or up to holes
 }
 
 template <int D>
