@@ -15,7 +15,6 @@
 #include "compare_cases.h"
 #include "compare_methods.h"
 #include "geometry/nearest_point_index.h"
-#include "lsrecon/adapters/curve_files.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"

@@ -2,7 +2,6 @@
 /// @file point_files_test.cpp
 /// @brief lsrecon's own PCD and PLY point readers: every encoding and numeric type, headers
 /// that lie or continue past DATA, truncation, and every mesh format lsrecon writes read back.
-#include "lsrecon/adapters/curve_files.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/testdata/analytic_shapes.h"

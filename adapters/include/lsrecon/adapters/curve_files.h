@@ -25,11 +25,6 @@ Curves read_polylines(const std::string& path);
 /// @brief "# loop k" then "x y" per vertex, written atomically.
 void write_polylines(const std::string& path, const Points<2>& vertices, const std::vector<std::vector<Index>>& loops);
 
-/// @brief Points as lsrecon reads them back, written atomically: PATH.ply as binary doubles in
-/// the host's byte order (exact; 10M points read in about 1 s against 10 s as text), any
-/// other name as text, "x y z" per line with 17 digits (2D input: z = 0).
-void write_points(const std::string& path, const Points<3>& points);
-
 /// @brief The curves over the data points as an SVG picture (y up).
 /// @param start if given, drawn dashed in grey (where the front started)
 void write_svg(const std::string& path, const Points<2>& vertices, const std::vector<std::vector<Index>>& loops,

