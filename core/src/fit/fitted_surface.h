@@ -28,9 +28,12 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
 
 /// @brief The blended local quadrics through the data (unit box) with their oriented normals;
 /// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that
-/// PCA's thickness also counts.
+/// PCA's thickness also counts. Where the mesh raised point_scale above sampling_scale (the
+/// data denser than it resolves) the fits see a sample at the raised scale
+/// (mesh_resolution_sample.h).
 template <int D>
 QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& point_scale, int threads, const Progress& progress = Progress());
+                                const std::vector<double>& point_scale, const std::vector<double>& sampling_scale,
+                                int threads, const Progress& progress = Progress());
 
 }  // namespace lsr::detail

@@ -47,7 +47,7 @@ template <int D>
 QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals,
                                     std::vector<double> spacing, const std::vector<double>& noise, int threads,
                                     const LargeVector<Index>* given, const Progress& progress)
-    : data_(data), spacing_(std::move(spacing)), blend_width2_(spacing_.size()), fits_(data.points().size()) {
+    : data_(&data), spacing_(std::move(spacing)), blend_width2_(spacing_.size()), fits_(data.points().size()) {
   // Read by every blend, twelve times per query: computed once.
   for (std::size_t i = 0; i < spacing_.size(); ++i) blend_width2_[i] = std::pow(std::max(spacing_[i], 1e-12), 2);
   const Points<D>& p = data.points();
@@ -105,6 +105,14 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
     }
   }
   progress.update("fit", 1.0);
+}
+
+template <int D>
+QuadricImplicit<D>::QuadricImplicit(std::unique_ptr<const NearestPointIndex<D>> data, Points<D> normals,
+                                    std::vector<double> spacing, const std::vector<double>& noise, int threads,
+                                    const LargeVector<Index>* nearest, const Progress& progress)
+    : QuadricImplicit(*data, std::move(normals), std::move(spacing), noise, threads, nearest, progress) {
+  owned_ = std::move(data);
 }
 
 template <int D>
@@ -205,16 +213,16 @@ double QuadricImplicit<D>::fit_value(const Fit& f, const Vec<D>& centre, const V
 template <int D>
 void QuadricImplicit<D>::evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal,
                                   int threads) const {
-  const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
+  const int k = std::min<int>(kBlendCentres, int(data_->points().size()));
   LargeVector<Index> nearest;
-  data_.query_k(queries, k, nearest, threads);
+  data_->query_k(queries, k, nearest, threads);
   blend(queries, nearest, k, value, normal, threads);
 }
 
 template <int D>
 void QuadricImplicit<D>::blend(const Points<D>& queries, const LargeVector<Index>& nearest, int k,
                                std::vector<double>& value, Points<D>* normal, int threads) const {
-  const Points<D>& p = data_.points();
+  const Points<D>& p = data_->points();
   value.assign(queries.size(), 0.0);
   if (normal) normal->assign(queries.size(), Vec<D>::Zero());
   const long n = long(queries.size());
@@ -245,9 +253,9 @@ void QuadricImplicit<D>::blend(const Points<D>& queries, const LargeVector<Index
 
 template <int D>
 Points<D> QuadricImplicit<D>::project(Points<D>& points, int threads) const {
-  const int k = std::min<int>(kBlendCentres, int(data_.points().size()));
+  const int k = std::min<int>(kBlendCentres, int(data_->points().size()));
   LargeVector<Index> nearest;
-  data_.query_k(points, k, nearest, threads);
+  data_->query_k(points, k, nearest, threads);
   std::vector<double> f;
   Points<D> n;
   for (int step = 0; step < 2; ++step) {
