@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace lsr {
 namespace {
@@ -52,6 +53,36 @@ TEST(StallDetection, ACreepingFrontThatStillSweepsGoesOn) {
 TEST(StallDetection, ANoisyFrontEatingIntoItsOutliersGoesOn) {
   // 3% per step (> 5% per window) with a still front: the bridge of the noisy two spheres.
   EXPECT_EQ(steps_to_stall(5.0, 0.97, 1e-4, 30), 0);
+}
+
+// Steps until stalled for a still front (1e-4 spacings a step) whose best residual falls 4% a
+// step (no creep by itself) while the bulk's residual falls by bulk_factor a step, alternating
+// 2% up and down with the renormalisations.
+int steps_to_stall_with_bulk(double bulk_factor, int steps = 40) {
+  StallDetector detector(StallRule{});
+  double best = 8.0, bulk = 2.8;  // best stays above `near` over the 40 steps
+  for (int n = 1; n <= steps; ++n) {
+    best *= 0.96;
+    bulk *= bulk_factor;
+    if (detector.stalled(best, true, 1e-4, bulk * (n % 2 ? 1.02 : 0.98))) return n;
+  }
+  return 0;
+}
+
+TEST(StallDetection, StragglersCreepingAboveAStillBulkStall) {
+  // The 1M-point sphere scan: the bulk (all but the worst 0.1%) stands from step 23 while the
+  // best residual, set by single stragglers, creeps 0.1-0.2 tolerances a step.
+  EXPECT_EQ(steps_to_stall_with_bulk(1.0), 6);
+  // The noisy two spheres: the bridge's patch of points falls with the best residual.
+  EXPECT_EQ(steps_to_stall_with_bulk(0.97), 0);
+}
+
+TEST(StallDetection, TheBulkIsAQuantileOfTheResiduals) {
+  std::vector<double> residuals(1000);
+  for (std::size_t i = 0; i < residuals.size(); ++i) residuals[i] = double((i * 389) % 1000);  // 0..999, shuffled
+  EXPECT_EQ(bulk_residual(residuals, 0.999), 998.0);  // rank floor(0.999 * 999) = 998
+  EXPECT_EQ(bulk_residual(residuals, 0.5), 499.0);
+  EXPECT_EQ(bulk_residual({}, 0.999), 0.0);
 }
 
 TEST(StallDetection, AStillFrontOneFreeStepFromConvergingStalls) {

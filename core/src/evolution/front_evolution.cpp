@@ -98,7 +98,8 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         r.status = ReconstructionStatus::converged;
         break;
       }
-      r.stalled = stall.stalled(best_residual_, r.best_iteration == n, displacement);
+      r.stalled = stall.stalled(best_residual_, r.best_iteration == n, displacement,
+                                bulk_residual(per_point, schedule_.stall.bulk_share));
       if (r.stalled) {
         // Stalled: the front no longer gets closer to the last points. Curvature holds it short
         // of the tip of a sharp concave crease, pinned cells short of a slit between close

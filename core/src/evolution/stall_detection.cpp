@@ -2,13 +2,16 @@
 /// @file stall_detection.cpp
 #include "evolution/stall_detection.h"
 
+#include <algorithm>
 #include <limits>
 #include <numeric>
 
 namespace lsr {
 
-bool StallDetector::stalled(double best_residual, bool improved, double displacement) {
+bool StallDetector::stalled(double best_residual, bool improved, double displacement, double bulk) {
   best_.push_back(best_residual);
+  // The bulk's residual alternates with the renormalisations: its best so far.
+  bulk_.push_back(bulk_.empty() ? bulk : std::min(bulk, bulk_.back()));
   displacement_.push_back(displacement);
   since_improvement_ = improved ? 0 : since_improvement_ + 1;
   if (since_improvement_ >= rule_.patience) return true;
@@ -17,7 +20,15 @@ bool StallDetector::stalled(double best_residual, bool improved, double displace
   const double swept = std::accumulate(displacement_.end() - long(p), displacement_.end(), 0.0);
   if (!(swept < rule_.stillness)) return false;
   const double start = best_[n - 1 - p];
-  return best_residual >= (1.0 - rule_.gain) * start || start <= rule_.near;
+  const bool bulk_crept = bulk_.back() > 0.0 && bulk_.back() >= (1.0 - rule_.gain) * bulk_[n - 1 - p];
+  return best_residual >= (1.0 - rule_.gain) * start || start <= rule_.near || bulk_crept;
+}
+
+double bulk_residual(std::vector<double> residuals, double bulk_share) {
+  if (residuals.empty()) return 0.0;
+  const auto rank = residuals.begin() + long(bulk_share * double(residuals.size() - 1));
+  std::nth_element(residuals.begin(), rank, residuals.end());
+  return *rank;
 }
 
 template <>

@@ -143,8 +143,9 @@ struct StoppingOptions {
   int max_iterations = 1000;
   /// Stalled fronts: stop after `patience` steps without a better residual, or when over the
   /// last `patience` steps the front moved less than stall_stillness local spacings on average
-  /// while its best residual fell by less than the fraction stall_gain or was already within
-  /// near_residual tolerances (negative: exp(|alpha| dt), one free step from converging).
+  /// while its best residual, or that of all but the worst 0.1% of the points, fell by less
+  /// than the fraction stall_gain, or the best was already within near_residual tolerances
+  /// (negative: exp(|alpha| dt), one free step from converging).
   /// stall_stillness 0: only the first rule.
   int patience = 5;
   double stall_gain = 0.05;       ///< see patience
