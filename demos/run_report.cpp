@@ -24,6 +24,8 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"max_resolution", o.mesh.max_resolution},
                         {"max_size_unit_box", o.mesh.h_max},
                         {"grading", o.mesh.grading},
+                        {"anisotropic", o.mesh.anisotropic},
+                        {"anisotropic_error", o.mesh.anisotropic_error},
                         {"alpha", o.evolution.alpha},
                         {"curvature_weight", o.evolution.curvature_weight},
                         {"time_step", o.evolution.time_step},

@@ -34,6 +34,7 @@ template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
+  if (D == 3 && o.mesh.anisotropic) throw InvalidInput("anisotropic meshes are 2D only for now", "leave anisotropic off for 3D data");
   // Before anything is allocated for the points.
   const Index max_vertices = o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size());
   ReconstructionResult<D> r;
@@ -58,7 +59,12 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
   // unless asked for, every point does.
   const bool rims_only = D == 3;
-  const HeightFieldsAt fields = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
+  // The anisotropic mesh needs every point's curvature (its height field).
+  const bool anisotropic = o.mesh.anisotropic;
+  const HeightFieldsAt fields = anisotropic ? HeightFieldsAt::all
+                                : hole_radius <= 0.0 ? HeightFieldsAt::none
+                                : rims_only          ? HeightFieldsAt::rims
+                                                     : HeightFieldsAt::all;
   LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
@@ -74,8 +80,9 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   std::vector<double> point_scale = local_scales(sampling);
   clock.end("sampling");
 
-  // 3. The mesh, fine near the data, coarse away from it.
+  // 3. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
   AdaptiveMesh<D> adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
+  if (anisotropic) adaptive.mesh = anisotropic_data_mesh(adaptive.mesh, data, sampling, point_scale, o, progress);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());
@@ -87,7 +94,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const Eigen::VectorXd& scale = at_vertex.scale;
   const std::vector<double>& dist = at_vertex.dist;
   const VertexCells cells = pin_cells(scale, data.points().size(), dist, at_vertex.nearest, o.evolution.pin_factor);
-  const std::vector<Location<D>> at = locate_all(adaptive, data.points(), o.limits.threads);
+  const std::vector<Location<D>> at = anisotropic ? locate_all(mesh, data.points(), o.limits.threads)
+                                                  : locate_all(adaptive, data.points(), o.limits.threads);
   release_forest(adaptive);  // its last use: a third of the peak at 200k points
   clock.end("distance");
 

@@ -52,6 +52,36 @@ TEST(LevelSetReconstruction, ConcaveStarConvergesToOneCurveWithinTwoHmin) {
   EXPECT_LE(max_distance(truth, NearestPointIndex<2>(r.surface.vertices)), 2 * h + std::sqrt(2.0) * h);
 }
 
+// The paper's anisotropic meshes (section 6.2, issue 46): triangles long along the data where
+// it is flat. The same curve (both distances of the test above, the mean distance to the truth
+// within the issue's 10%) on a third of the mesh vertices or fewer (the issue's target; the
+// star's long sizes are sqrt(8 e l / kappa) / l = 8-30x its sizes across).
+TEST(LevelSetReconstruction, AnAnisotropicMeshGivesTheSameStarOnAThirdOfTheVertices) {
+  const Points<2> truth = star(100000);
+  const NearestPointIndex<2> truth_index(truth);
+  const Points<2> data = star(4000);
+  const auto mean_distance = [&](const Points<2>& p) {
+    std::vector<double> d;
+    truth_index.query(p, d);
+    double sum = 0.0;
+    for (double x : d) sum += x;
+    return sum / double(d.size());
+  };
+  const auto iso = reconstruct<2>(data);
+  ReconstructionOptions o;
+  o.mesh.anisotropic = true;
+  const auto r = reconstruct<2>(data, o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  ASSERT_EQ(r.loops.size(), 1u);
+  const double h = r.tolerance;
+  EXPECT_LE(max_distance(r.surface.vertices, truth_index), 2 * h);
+  EXPECT_LE(max_distance(truth, NearestPointIndex<2>(r.surface.vertices)), 2 * h + std::sqrt(2.0) * h);
+  EXPECT_LE(3 * r.mesh_vertices, iso.mesh_vertices);
+  EXPECT_LE(mean_distance(r.surface.vertices), 1.1 * mean_distance(iso.surface.vertices));
+  std::printf("star, 4000 points: %d mesh vertices (isotropic %d), mean distance %.3e (%.3e), %d steps (%d)\n", int(r.mesh_vertices),
+              int(iso.mesh_vertices), mean_distance(r.surface.vertices), mean_distance(iso.surface.vertices), r.iterations, iso.iterations);
+}
+
 TEST(LevelSetReconstruction, NoisyCircleGivesOneSmoothCurveWithErrorOfTheNoise) {
   // Section 6.4.2: Gaussian noise by Box-Muller, sigma = 2 d_min.
   const int n = 2000;

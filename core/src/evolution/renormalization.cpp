@@ -290,10 +290,12 @@ void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const Leve
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const Index w = candidates[i];
       const auto [d, f] = offer[i];
-      if (f == c.facet[w] || d >= band) continue;
+      if (f == c.facet[w]) continue;
       c.distance[w] = d;
       c.facet[w] = f;
-      changed.push_back(w);
+      // Beyond the band the facet is kept for the descent, not passed on: on stretched
+      // simplices a vertex within the band may have no neighbour nearer the front than it is.
+      if (d < band) changed.push_back(w);
     }
   }
 }
@@ -315,9 +317,10 @@ RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNei
   descend(mesh, report.front, front_adjacency(report.front, threads), balls, c, threads);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
     // Beyond the band (or cut off from the front, which a connected mesh never is): +-band.
-    const double d = c.facet[i] >= 0 ? c.distance[i] : (std::isfinite(band) ? band : std::abs(u[i]));
+    const bool within = c.facet[i] >= 0 && c.distance[i] < band;
+    const double d = within ? c.distance[i] : (std::isfinite(band) ? band : std::abs(u[i]));
     u[i] = u[i] < 0.0 ? -d : d;
-    report.band_vertices += c.facet[i] >= 0;
+    report.band_vertices += within;
   }
   return report;
 }

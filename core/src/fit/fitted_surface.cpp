@@ -4,6 +4,7 @@
 
 #include "surface/closed_surface.h"
 
+#include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
 #include "fit/mesh_resolution_sample.h"
 #include "fit/sheet_gaps.h"
@@ -142,6 +143,17 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
   }
   attach_volume(r, mesh, values, volume);
+  // A curve as fine as an isotropic mesh gives (chords of at most sqrt(2) h <= 1.5 l) where an
+  // anisotropic mesh left long ones; not with a volume mesh, whose boundary is the curve as
+  // extracted.
+  if constexpr (D == 2) {
+    if (!volume) {
+      refine_long_segments(r.surface, r.normals, fit, [&](std::size_t i) {
+        const EdgePoint& e = r.surface.sources[i];
+        return 0.75 * ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
+      }, threads);
+    }
+  }
 }
 
 template <int D>

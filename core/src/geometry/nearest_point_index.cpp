@@ -180,9 +180,17 @@ void NearestPointIndex<D>::within(const Vec<D>& q, double radius, std::vector<In
 
 template <int D>
 double NearestPointIndex<D>::distance(const Vec<D>& q) const {
-  std::vector<double> d;
-  query(Points<D>{q}, d, nullptr, 1);
-  return d[0];
+  double d = std::numeric_limits<double>::infinity();
+  nearest(q, d);
+  return d;
+}
+
+template <int D>
+Index NearestPointIndex<D>::nearest(const Vec<D>& q, double& distance) const {
+  BoundedNearest found(std::numeric_limits<double>::infinity());
+  impl_->index->findNeighbors(found, q.data(), flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false));
+  distance = found.index == std::size_t(-1) ? std::numeric_limits<double>::infinity() : std::sqrt(found.worst);
+  return found.index == std::size_t(-1) ? Index(-1) : Index(found.index);
 }
 
 template class NearestPointIndex<2>;

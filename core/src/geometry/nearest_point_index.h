@@ -47,6 +47,10 @@ class NearestPointIndex {
   /// @brief Distance from one point to the data.
   double distance(const Vec<D>& q) const;
 
+  /// @brief The data point nearest to q (-1 for an empty set) and its distance, on the calling
+  /// thread.
+  Index nearest(const Vec<D>& q, double& distance) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -15,6 +15,9 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.mesh.max_resolution == 0.0 || (o.mesh.max_resolution >= 4.0 && o.mesh.max_resolution <= 1e5))) {
     bad("max_resolution must be 0 (automatic) or in [4, 1e5]", "use 0 (256 in 3D, 4096 in 2D) or e.g. 512");
   }
+  if (!(o.mesh.anisotropic_error > 0.0 && o.mesh.anisotropic_error <= 100.0)) {
+    bad("anisotropic_error must be in (0, 100]", "use 0.25 (local mesh sizes)");
+  }
   if (!std::isfinite(o.evolution.alpha)) bad("alpha is not finite", "use 0 (automatic), 2 or -2");
   if (!std::isfinite(o.evolution.curvature_weight)) bad("curvature_weight is not finite", "use -1 (automatic)");
   if (!(o.evolution.time_step >= 0.0 && o.evolution.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (automatic: 0.2 / |alpha|)");

@@ -7,6 +7,7 @@
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/core/progress.h"
 #include "mesh/adaptive_refinement.h"
+#include "sampling/local_sampling.h"
 
 #include <vector>
 
@@ -19,5 +20,11 @@ namespace lsr::detail {
 template <int D>
 AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
                           Index max_vertices, const Progress& progress, double& h_min);
+
+/// @brief The isotropic data mesh adapted to the data's metric (data_metric.h): the same sizes
+/// across the data, longer along it where it is flat. 2D (metric_adaptation.h).
+template <int D>
+SimplexMesh<D> anisotropic_data_mesh(const SimplexMesh<D>& isotropic, const NearestPointIndex<D>& data, const LocalSampling<D>& sampling,
+                                     const std::vector<double>& point_scale, const ReconstructionOptions& o, const Progress& progress);
 
 }  // namespace lsr::detail

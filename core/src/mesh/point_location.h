@@ -30,6 +30,12 @@ template <int D>
 std::vector<Location<D>> locate_all(const AdaptiveMesh<D>& mesh, const Points<D>& points,
                                     int threads = 0);
 
+/// @brief Locates each point in any conforming simplicial mesh (an adapted mesh has no forest)
+/// through a uniform grid of buckets, each listing the simplices whose bounding box meets it
+/// (grid_point_location.cpp); a point on a face shared by two simplices goes to either.
+template <int D>
+std::vector<Location<D>> locate_all(const SimplexMesh<D>& mesh, const Points<D>& points, int threads = 0);
+
 /// @brief The P1 interpolant of the nodal field u (std::vector or Eigen vector) at a located
 /// point.
 template <int D, class Field>

@@ -73,6 +73,12 @@ struct MeshOptions {
   /// the data). Smaller c widens the fine band around the data; the default 2 keeps simplices
   /// of size h_min within about 2.7 h_min of the data. In (0, 100].
   double grading = 2.0;
+  /// Adapts the mesh to the data's metric (the paper's anisotropic meshes, section 6.2): the
+  /// sizes across the data stay the isotropic mesh's, along it they grow where it is flat, to
+  /// sqrt(8 anisotropic_error h / kappa) (h the local size, kappa the curvature). 2D only.
+  bool anisotropic = false;
+  /// The chord error allowed along the data, in units of the local mesh size; in (0, 100].
+  double anisotropic_error = 0.25;
 };
 
 /// @brief Where the front starts.

@@ -1,0 +1,372 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file metric_adaptation_2d.cpp
+/// @brief Triangles adapted to a metric by local operations (Frey and George, "Mesh
+/// generation", chapter 21): every round splits the edges longer than sqrt(2), collapses those
+/// shorter than 1/sqrt(2), flips edges where the pair's worse shape improves and moves each
+/// vertex towards the points at unit length from its neighbours. Every operation checks the
+/// elements it makes: none is inverted or flat, none worse than the worse of the ones it
+/// replaces or a fair shape, and a collapse makes no edge longer than sqrt(2).
+#include "mesh/metric_adaptation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace lsr {
+
+template <int D>
+double metric_length(const Vec<D>& e, const Metric<D>& ma, const Metric<D>& mb) {
+  const double la = std::sqrt(std::max(0.0, e.dot(ma * e)));
+  const double lb = std::sqrt(std::max(0.0, e.dot(mb * e)));
+  if (!(la > 0.0 && lb > 0.0) || std::abs(la - lb) < 1e-6 * (la + lb)) return 0.5 * (la + lb);
+  return (la - lb) / std::log(la / lb);
+}
+
+double metric_quality(const std::array<Vec<2>, 3>& x, const Metric<2>& m) {
+  const Vec<2> e0 = x[1] - x[0], e1 = x[2] - x[1], e2 = x[0] - x[2];
+  const double area = 0.5 * (e2.x() * e0.y() - e2.y() * e0.x());  // (x1 - x0) x (x2 - x0) / 2
+  const double sum = e0.dot(m * e0) + e1.dot(m * e1) + e2.dot(m * e2);
+  if (!(sum > 0.0)) return 0.0;
+  return 4.0 * std::sqrt(3.0) * area * std::sqrt(std::max(0.0, m.determinant())) / sum;
+}
+
+namespace {
+
+using Triangle = std::array<Index, 3>;
+using Edge = std::pair<Index, Index>;
+
+// A collapse or a relocation may leave elements this good even where the ones they replace
+// were better: a fair triangle (angles within about 20-130 degrees in the metric).
+constexpr double kFairQuality = 0.3;
+
+class TriangleAdaptation {
+ public:
+  TriangleAdaptation(const SimplexMesh<2>& mesh, const MetricField<2>& metric) : metric_(metric) {
+    lo_ = hi_ = mesh.vertices.empty() ? Vec<2>::Zero() : Vec<2>(mesh.vertices[0]);
+    for (const auto& p : mesh.vertices) {
+      lo_ = lo_.cwiseMin(p);
+      hi_ = hi_.cwiseMax(p);
+    }
+    for (const auto& p : mesh.vertices) add_vertex(p, faces_of(p));
+    for (const auto& s : mesh.simplices) add_triangle(s);
+  }
+
+  Index vertices() const { return Index(x_.size()) - dead_vertices_; }
+
+  // Until no edge is longer than sqrt(2): each split at least halves a long edge.
+  Index split_long_edges() {
+    Index n = 0;
+    for (int pass = 0; pass < 64; ++pass) {
+      std::vector<std::pair<double, Edge>> longer;
+      for (const Edge& e : edges()) {
+        const double l = length(e.first, e.second);
+        if (l > kLongEdge) longer.emplace_back(-l, e);
+      }
+      if (longer.empty()) break;
+      std::sort(longer.begin(), longer.end());
+      for (const auto& [l, e] : longer) {
+        if (shared(e.first, e.second).empty()) continue;  // split already, as a neighbour's side
+        split(e.first, e.second);
+        ++n;
+      }
+    }
+    return n;
+  }
+
+  Index collapse_short_edges() {
+    std::vector<std::pair<double, Edge>> shorter;
+    for (const Edge& e : edges()) {
+      const double l = length(e.first, e.second);
+      if (l < kShortEdge) shorter.emplace_back(l, e);
+    }
+    std::sort(shorter.begin(), shorter.end());
+    Index n = 0;
+    for (const auto& [l, e] : shorter) {
+      const auto [a, b] = e;
+      if (dead_[std::size_t(a)] || dead_[std::size_t(b)] || shared(a, b).empty() || length(a, b) >= kShortEdge) continue;
+      if (collapse(a, b) || collapse(b, a)) ++n;
+    }
+    return n;
+  }
+
+  // Until no flip improves: after the first sweep only the sides of flipped pairs are looked at
+  // again. Each flip raises the worse quality of its pair, so it ends.
+  Index flip_edges() {
+    Index n = 0;
+    std::vector<Edge> work = edges();
+    while (!work.empty()) {
+      std::vector<Edge> next;
+      for (const Edge& e : work) {
+        Index c = -1, d = -1;
+        if (!flip(e.first, e.second, c, d)) continue;
+        ++n;
+        for (const Edge& side : {Edge(e.first, c), Edge(c, e.second), Edge(e.second, d), Edge(d, e.first)}) next.push_back(side);
+      }
+      work = std::move(next);
+    }
+    return n;
+  }
+
+  Index relocate_vertices() {
+    Index n = 0;
+    for (Index v = 0; v < Index(x_.size()); ++v) n += relocate(v) ? 1 : 0;
+    return n;
+  }
+
+  SimplexMesh<2> result() const {
+    SimplexMesh<2> out;
+    std::vector<Index> renumber(x_.size(), -1);
+    for (std::size_t v = 0; v < x_.size(); ++v) {
+      if (dead_[v]) continue;
+      renumber[v] = Index(out.vertices.size());
+      out.vertices.push_back(x_[v]);
+    }
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+      if (!alive_[t]) continue;
+      const Triangle& s = triangles_[t];
+      out.simplices.push_back({renumber[std::size_t(s[0])], renumber[std::size_t(s[1])], renumber[std::size_t(s[2])]});
+    }
+    return out;
+  }
+
+ private:
+  // Bits 2k and 2k + 1: on the box's low and high face of axis k.
+  unsigned faces_of(const Vec<2>& p) const {
+    unsigned f = 0;
+    for (int k = 0; k < 2; ++k) {
+      const double tol = 1e-12 * (hi_[k] - lo_[k]);
+      if (p[k] <= lo_[k] + tol) f |= 1u << (2 * k);
+      if (p[k] >= hi_[k] - tol) f |= 1u << (2 * k + 1);
+    }
+    return f;
+  }
+  static bool corner(unsigned faces) { return (faces & 3u) != 0 && (faces & 12u) != 0; }
+
+  Index add_vertex(const Vec<2>& p, unsigned faces) {
+    x_.push_back(p);
+    m_.push_back(metric_(p));
+    faces_.push_back(faces);
+    dead_.push_back(0);
+    ball_.emplace_back();
+    return Index(x_.size()) - 1;
+  }
+  Index add_triangle(const Triangle& s) {
+    const Index t = Index(triangles_.size());
+    triangles_.push_back(s);
+    alive_.push_back(1);
+    for (Index v : s) ball_[std::size_t(v)].push_back(t);
+    return t;
+  }
+  void leave_ball(Index v, Index t) {
+    auto& b = ball_[std::size_t(v)];
+    const auto it = std::find(b.begin(), b.end(), t);
+    *it = b.back();
+    b.pop_back();
+  }
+
+  // Every edge once: an inner edge from the triangle that runs it from its lower vertex, an
+  // edge of the box from its only triangle.
+  std::vector<Edge> edges() const {
+    std::vector<Edge> e;
+    e.reserve(2 * triangles_.size());
+    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+      if (!alive_[t]) continue;
+      const Triangle& s = triangles_[t];
+      for (int i = 0; i < 3; ++i) {
+        const Index a = s[std::size_t(i)], b = s[std::size_t((i + 1) % 3)];
+        if (a < b) {
+          e.emplace_back(a, b);
+        } else if (shared(a, b).size() == 1) {
+          e.emplace_back(b, a);
+        }
+      }
+    }
+    return e;
+  }
+
+  double length(Index a, Index b) const {
+    return metric_length<2>(x_[std::size_t(b)] - x_[std::size_t(a)], m_[std::size_t(a)], m_[std::size_t(b)]);
+  }
+  // The shape of s, in the mean of its vertices' metrics; x_[moved] read as `at` if given.
+  double quality(const Triangle& s, Index moved = -1, const Vec<2>& at = Vec<2>::Zero()) const {
+    std::array<Vec<2>, 3> p;
+    Metric<2> m = Metric<2>::Zero();
+    for (int i = 0; i < 3; ++i) {
+      const auto v = std::size_t(s[std::size_t(i)]);
+      p[std::size_t(i)] = s[std::size_t(i)] == moved ? at : x_[v];
+      m += m_[v] / 3.0;
+    }
+    return metric_quality(p, m);
+  }
+
+  static bool contains(const Triangle& s, Index v) { return s[0] == v || s[1] == v || s[2] == v; }
+  static Index third(const Triangle& s, Index a, Index b) {
+    for (Index v : s) {
+      if (v != a && v != b) return v;
+    }
+    return -1;
+  }
+  std::vector<Index> shared(Index a, Index b) const {
+    std::vector<Index> out;
+    for (Index t : ball_[std::size_t(a)]) {
+      if (contains(triangles_[std::size_t(t)], b)) out.push_back(t);
+    }
+    return out;
+  }
+  std::vector<Index> neighbours(Index v) const {
+    std::vector<Index> out;
+    for (Index t : ball_[std::size_t(v)]) {
+      for (Index w : triangles_[std::size_t(t)]) {
+        if (w != v) out.push_back(w);
+      }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  void split(Index a, Index b) {
+    const std::vector<Index> around = shared(a, b);
+    const Index c = add_vertex(0.5 * (x_[std::size_t(a)] + x_[std::size_t(b)]), faces_[std::size_t(a)] & faces_[std::size_t(b)]);
+    for (Index t : around) {
+      Triangle half = triangles_[std::size_t(t)];
+      std::replace(half.begin(), half.end(), a, c);
+      std::replace(triangles_[std::size_t(t)].begin(), triangles_[std::size_t(t)].end(), b, c);
+      leave_ball(b, t);
+      ball_[std::size_t(c)].push_back(t);
+      add_triangle(half);
+    }
+  }
+
+  // Removes a, moving its triangles to b, if the mesh stays valid and fair.
+  bool collapse(Index a, Index b) {
+    const unsigned fa = faces_[std::size_t(a)], fb = faces_[std::size_t(b)];
+    if ((fa & ~fb) != 0) return false;  // a may only slide along its faces
+    const std::vector<Index> around = shared(a, b);
+    // The link condition: a and b share no neighbour but the triangles' third vertices.
+    const std::vector<Index> na = neighbours(a), nb = neighbours(b);
+    std::vector<Index> common;
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    if (common.size() != around.size()) return false;
+    for (Index v : na) {
+      if (v != b && length(b, v) > kLongEdge) return false;
+    }
+    double before = std::numeric_limits<double>::infinity(), after = before;
+    for (Index t : ball_[std::size_t(a)]) {
+      const Triangle& s = triangles_[std::size_t(t)];
+      before = std::min(before, quality(s));
+      if (!contains(s, b)) after = std::min(after, quality(s, a, x_[std::size_t(b)]));
+    }
+    if (!(after > 0.0) || after < std::min(before, kFairQuality)) return false;
+    for (Index t : std::vector<Index>(ball_[std::size_t(a)])) {
+      Triangle& s = triangles_[std::size_t(t)];
+      if (contains(s, b)) {
+        alive_[std::size_t(t)] = 0;
+        for (Index v : s) {
+          if (v != a) leave_ball(v, t);
+        }
+      } else {
+        std::replace(s.begin(), s.end(), a, b);
+        ball_[std::size_t(b)].push_back(t);
+      }
+    }
+    ball_[std::size_t(a)].clear();
+    dead_[std::size_t(a)] = 1;
+    ++dead_vertices_;
+    return true;
+  }
+
+  // Replaces the diagonal ab of the quadrilateral acbd by cd if the worse triangle improves.
+  bool flip(Index a, Index b, Index& c_out, Index& d_out) {
+    std::vector<Index> around = shared(a, b);
+    if (around.size() != 2) return false;
+    Index t1 = around[0], t2 = around[1];
+    // t1 = (a, b, c) in its orientation, t2 = (b, a, d).
+    const Triangle& s1 = triangles_[std::size_t(t1)];
+    const auto ia = std::size_t(std::find(s1.begin(), s1.end(), a) - s1.begin());
+    if (s1[(ia + 1) % 3] != b) std::swap(t1, t2);
+    const Index c = third(triangles_[std::size_t(t1)], a, b), d = third(triangles_[std::size_t(t2)], a, b);
+    if (!shared(c, d).empty()) return false;
+    const Triangle n1{c, a, d}, n2{c, d, b};
+    const double before = std::min(quality(triangles_[std::size_t(t1)]), quality(triangles_[std::size_t(t2)]));
+    const double after = std::min(quality(n1), quality(n2));
+    if (!(after > before * (1.0 + 1e-3) + 1e-12)) return false;
+    triangles_[std::size_t(t1)] = n1;
+    triangles_[std::size_t(t2)] = n2;
+    leave_ball(a, t2);
+    leave_ball(b, t1);
+    ball_[std::size_t(c)].push_back(t2);
+    ball_[std::size_t(d)].push_back(t1);
+    c_out = c;
+    d_out = d;
+    return true;
+  }
+
+  // Towards the mean of the points at unit length from each neighbour on the way to v.
+  bool relocate(Index v) {
+    const auto vi = std::size_t(v);
+    if (dead_[vi] || corner(faces_[vi])) return false;
+    const std::vector<Index> near = neighbours(v);
+    Vec<2> target = Vec<2>::Zero();
+    for (Index w : near) {
+      const Vec<2>& q = x_[std::size_t(w)];
+      target += q + (x_[vi] - q) / std::max(length(w, v), 1e-12);
+    }
+    target /= double(near.size());
+    for (int k = 0; k < 2; ++k) {
+      if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
+    }
+    double before = std::numeric_limits<double>::infinity();
+    for (Index t : ball_[vi]) before = std::min(before, quality(triangles_[std::size_t(t)]));
+    for (double step = 1.0; step > 0.1; step *= 0.5) {
+      const Vec<2> p = x_[vi] + step * (target - x_[vi]);
+      double after = std::numeric_limits<double>::infinity();
+      for (Index t : ball_[vi]) after = std::min(after, quality(triangles_[std::size_t(t)], v, p));
+      if (after > before * (1.0 + 1e-3)) {
+        x_[vi] = p;
+        m_[vi] = metric_(p);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  const MetricField<2>& metric_;
+  Vec<2> lo_, hi_;
+  std::vector<Vec<2>> x_;
+  std::vector<Metric<2>> m_;
+  std::vector<unsigned> faces_;
+  std::vector<char> dead_;
+  Index dead_vertices_ = 0;
+  std::vector<std::vector<Index>> ball_;
+  std::vector<Triangle> triangles_;
+  std::vector<char> alive_;
+};
+
+}  // namespace
+
+SimplexMesh<2> adapt_to_metric(const SimplexMesh<2>& mesh, const MetricField<2>& metric, int max_cycles,
+                               MetricAdaptationStats* stats) {
+  TriangleAdaptation work(mesh, metric);
+  MetricAdaptationStats s;
+  for (; s.cycles < max_cycles;) {
+    ++s.cycles;
+    const Index split = work.split_long_edges(), collapsed = work.collapse_short_edges();
+    s.splits += split;
+    s.collapses += collapsed;
+    s.flips += work.flip_edges();
+    s.moves += work.relocate_vertices();
+    if (double(split + collapsed) < 0.01 * double(work.vertices())) break;
+  }
+  s.flips += work.flip_edges();
+  if (stats) *stats = s;
+  return work.result();
+}
+
+template double metric_length<2>(const Vec<2>&, const Metric<2>&, const Metric<2>&);
+template double metric_length<3>(const Vec<3>&, const Metric<3>&, const Metric<3>&);
+
+}  // namespace lsr
