@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -209,15 +208,25 @@ class TriangleAdaptation {
     }
     return -1;
   }
-  std::vector<Index> shared(Index a, Index b) const {
-    std::vector<Index> out;
+  // The triangles on edge ab: at most two in a conforming mesh.
+  struct Pair {
+    std::array<Index, 2> t{};
+    std::size_t n = 0;
+    bool empty() const { return n == 0; }
+    std::size_t size() const { return n; }
+    const Index* begin() const { return t.data(); }
+    const Index* end() const { return t.data() + n; }
+  };
+  Pair shared(Index a, Index b) const {
+    Pair out;
     for (Index t : ball_[std::size_t(a)]) {
-      if (contains(triangles_[std::size_t(t)], b)) out.push_back(t);
+      if (out.n < 2 && contains(triangles_[std::size_t(t)], b)) out.t[out.n++] = t;
     }
     return out;
   }
-  std::vector<Index> neighbours(Index v) const {
-    std::vector<Index> out;
+  // The vertices sharing an edge with v, ascending, into `out` (reused: no allocation per call).
+  void neighbours(Index v, std::vector<Index>& out) const {
+    out.clear();
     for (Index t : ball_[std::size_t(v)]) {
       for (Index w : triangles_[std::size_t(t)]) {
         if (w != v) out.push_back(w);
@@ -225,11 +234,10 @@ class TriangleAdaptation {
     }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
   }
 
   void split(Index a, Index b) {
-    const std::vector<Index> around = shared(a, b);
+    const Pair around = shared(a, b);
     const Index c = add_vertex(0.5 * (x_[std::size_t(a)] + x_[std::size_t(b)]), faces_[std::size_t(a)] & faces_[std::size_t(b)]);
     for (Index t : around) {
       Triangle half = triangles_[std::size_t(t)];
@@ -245,13 +253,22 @@ class TriangleAdaptation {
   bool collapse(Index a, Index b) {
     const unsigned fa = faces_[std::size_t(a)], fb = faces_[std::size_t(b)];
     if ((fa & ~fb) != 0) return false;  // a may only slide along its faces
-    const std::vector<Index> around = shared(a, b);
+    const Pair around = shared(a, b);
     // The link condition: a and b share no neighbour but the triangles' third vertices.
-    const std::vector<Index> na = neighbours(a), nb = neighbours(b);
-    std::vector<Index> common;
-    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
-    if (common.size() != around.size()) return false;
-    for (Index v : na) {
+    neighbours(a, na_);
+    neighbours(b, nb_);
+    std::size_t common = 0;
+    for (auto i = na_.begin(), j = nb_.begin(); i != na_.end() && j != nb_.end();) {
+      if (*i < *j) {
+        ++i;
+      } else if (*j < *i) {
+        ++j;
+      } else {
+        ++common, ++i, ++j;
+      }
+    }
+    if (common != around.size()) return false;
+    for (Index v : na_) {
       if (v != b && length(b, v) > kLongEdge) return false;
     }
     double before = std::numeric_limits<double>::infinity(), after = before;
@@ -261,7 +278,8 @@ class TriangleAdaptation {
       if (!contains(s, b)) after = std::min(after, quality(s, a, x_[std::size_t(b)]));
     }
     if (!(after > 0.0) || after < std::min(before, kFairQuality)) return false;
-    for (Index t : std::vector<Index>(ball_[std::size_t(a)])) {
+    moved_ = ball_[std::size_t(a)];
+    for (Index t : moved_) {
       Triangle& s = triangles_[std::size_t(t)];
       if (contains(s, b)) {
         alive_[std::size_t(t)] = 0;
@@ -281,9 +299,9 @@ class TriangleAdaptation {
 
   // Replaces the diagonal ab of the quadrilateral acbd by cd if the worse triangle improves.
   bool flip(Index a, Index b, Index& c_out, Index& d_out) {
-    std::vector<Index> around = shared(a, b);
+    const Pair around = shared(a, b);
     if (around.size() != 2) return false;
-    Index t1 = around[0], t2 = around[1];
+    Index t1 = around.t[0], t2 = around.t[1];
     // t1 = (a, b, c) in its orientation, t2 = (b, a, d).
     const Triangle& s1 = triangles_[std::size_t(t1)];
     const auto ia = std::size_t(std::find(s1.begin(), s1.end(), a) - s1.begin());
@@ -309,13 +327,13 @@ class TriangleAdaptation {
   bool relocate(Index v) {
     const auto vi = std::size_t(v);
     if (dead_[vi] || corner(faces_[vi])) return false;
-    const std::vector<Index> near = neighbours(v);
+    neighbours(v, na_);
     Vec<2> target = Vec<2>::Zero();
-    for (Index w : near) {
+    for (Index w : na_) {
       const Vec<2>& q = x_[std::size_t(w)];
       target += q + (x_[vi] - q) / std::max(length(w, v), 1e-12);
     }
-    target /= double(near.size());
+    target /= double(na_.size());
     for (int k = 0; k < 2; ++k) {
       if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
     }
@@ -344,6 +362,7 @@ class TriangleAdaptation {
   std::vector<std::vector<Index>> ball_;
   std::vector<Triangle> triangles_;
   std::vector<char> alive_;
+  std::vector<Index> na_, nb_, moved_;  // scratch lists, reused
 };
 
 }  // namespace
