@@ -25,26 +25,16 @@ AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>&
   return build_adaptive_mesh(data, mo, progress);
 }
 
-template <int D>
-SimplexMesh<D> anisotropic_data_mesh(const SimplexMesh<D>& isotropic, const NearestPointIndex<D>& data, const LocalSampling<D>& sampling,
+SimplexMesh<2> anisotropic_data_mesh(const SimplexMesh<2>& isotropic, const NearestPointIndex<2>& data, const LocalSampling<2>& sampling,
                                      const std::vector<double>& point_scale, const ReconstructionOptions& o, const Progress& progress) {
-  if constexpr (D == 2) {
-    progress.update("mesh", -1.0);
-    const std::vector<double> size = local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution);
-    return adapt_to_metric(isotropic, data_metric<D>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
-  } else {
-    throw InvalidInput("anisotropic meshes are 2D only for now", "leave anisotropic off for 3D data");
-  }
+  progress.update("mesh", -1.0);
+  const std::vector<double> size = local_mesh_sizes<2>(point_scale, o.mesh.h_min, o.mesh.max_resolution);
+  return adapt_to_metric(isotropic, data_metric<2>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
 }
 
 template AdaptiveMesh<2> data_mesh<2>(const NearestPointIndex<2>&, std::vector<double>&, const ReconstructionOptions&, Index,
                                       const Progress&, double&);
 template AdaptiveMesh<3> data_mesh<3>(const NearestPointIndex<3>&, std::vector<double>&, const ReconstructionOptions&, Index,
                                       const Progress&, double&);
-
-template SimplexMesh<2> anisotropic_data_mesh<2>(const SimplexMesh<2>&, const NearestPointIndex<2>&, const LocalSampling<2>&,
-                                                 const std::vector<double>&, const ReconstructionOptions&, const Progress&);
-template SimplexMesh<3> anisotropic_data_mesh<3>(const SimplexMesh<3>&, const NearestPointIndex<3>&, const LocalSampling<3>&,
-                                                 const std::vector<double>&, const ReconstructionOptions&, const Progress&);
 
 }  // namespace lsr::detail

@@ -22,9 +22,8 @@ AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>&
                           Index max_vertices, const Progress& progress, double& h_min);
 
 /// @brief The isotropic data mesh adapted to the data's metric (data_metric.h): the same sizes
-/// across the data, longer along it where it is flat. 2D (metric_adaptation.h).
-template <int D>
-SimplexMesh<D> anisotropic_data_mesh(const SimplexMesh<D>& isotropic, const NearestPointIndex<D>& data, const LocalSampling<D>& sampling,
+/// across the data, longer along it where it is flat (metric_adaptation.h: triangles only).
+SimplexMesh<2> anisotropic_data_mesh(const SimplexMesh<2>& isotropic, const NearestPointIndex<2>& data, const LocalSampling<2>& sampling,
                                      const std::vector<double>& point_scale, const ReconstructionOptions& o, const Progress& progress);
 
 }  // namespace lsr::detail
