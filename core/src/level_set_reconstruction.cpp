@@ -81,10 +81,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   clock.end("sampling");
 
   // 3. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
-  AdaptiveMesh<D> adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
+  AdaptiveMesh<D> adaptive;
   if constexpr (D == 2) {
-    if (anisotropic) adaptive.mesh = anisotropic_data_mesh(adaptive.mesh, data, sampling, point_scale, o, progress);
+    if (anisotropic) adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
   }
+  if (!anisotropic) adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());

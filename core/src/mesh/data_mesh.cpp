@@ -10,9 +10,11 @@
 
 namespace lsr::detail {
 
+namespace {
+
+// The Kuhn mesh's options: each point's size, and its scale raised to it.
 template <int D>
-AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
-                          Index max_vertices, const Progress& progress, double& h_min) {
+AdaptiveMeshOptions mesh_options(std::vector<double>& point_scale, const ReconstructionOptions& o, Index max_vertices, double& h_min) {
   AdaptiveMeshOptions mo;
   mo.point_size = local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution);
   for (std::size_t i = 0; i < point_scale.size(); ++i) point_scale[i] = std::max(point_scale[i], mo.point_size[i]);
@@ -22,14 +24,32 @@ AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>&
   mo.max_vertices = max_vertices;
   mo.threads = o.limits.threads;
   h_min = mo.h_min;
-  return build_adaptive_mesh(data, mo, progress);
+  return mo;
 }
 
-SimplexMesh<2> anisotropic_data_mesh(const SimplexMesh<2>& isotropic, const NearestPointIndex<2>& data, const LocalSampling<2>& sampling,
-                                     const std::vector<double>& point_scale, const ReconstructionOptions& o, const Progress& progress) {
+// The anisotropic mesh starts from the Kuhn mesh this much coarser than the data's sizes and
+// splits down to them across: starting at the data's sizes, it collapsed nine vertices in ten
+// (measured on the 20k star, one thread: 0.74 s a run at 1x, 0.48 s at 4x, 0.43 s at 8x, 0.41 s
+// at 16x, the isotropic run 0.45 s; the same curve to 3 digits).
+constexpr double kAnisotropicStartCoarsening = 8.0;
+
+}  // namespace
+
+template <int D>
+AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
+                          Index max_vertices, const Progress& progress, double& h_min) {
+  return build_adaptive_mesh(data, mesh_options<D>(point_scale, o, max_vertices, h_min), progress);
+}
+
+SimplexMesh<2> anisotropic_data_mesh(const NearestPointIndex<2>& data, const LocalSampling<2>& sampling, std::vector<double>& point_scale,
+                                     const ReconstructionOptions& o, Index max_vertices, const Progress& progress, double& h_min) {
+  AdaptiveMeshOptions mo = mesh_options<2>(point_scale, o, max_vertices, h_min);
+  const std::vector<double> size = mo.point_size;
+  for (double& x : mo.point_size) x = std::min(kAnisotropicStartCoarsening * x, mo.h_max);
+  mo.h_min = std::min(kAnisotropicStartCoarsening * mo.h_min, mo.h_max);
+  const SimplexMesh<2> start = build_adaptive_mesh(data, mo, progress).mesh;
   progress.update("mesh", -1.0);
-  const std::vector<double> size = local_mesh_sizes<2>(point_scale, o.mesh.h_min, o.mesh.max_resolution);
-  return adapt_to_metric(isotropic, data_metric<2>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
+  return adapt_to_metric(start, data_metric<2>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
 }
 
 template AdaptiveMesh<2> data_mesh<2>(const NearestPointIndex<2>&, std::vector<double>&, const ReconstructionOptions&, Index,

@@ -21,9 +21,10 @@ template <int D>
 AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>& point_scale, const ReconstructionOptions& o,
                           Index max_vertices, const Progress& progress, double& h_min);
 
-/// @brief The isotropic data mesh adapted to the data's metric (data_metric.h): the same sizes
-/// across the data, longer along it where it is flat (metric_adaptation.h: triangles only).
-SimplexMesh<2> anisotropic_data_mesh(const SimplexMesh<2>& isotropic, const NearestPointIndex<2>& data, const LocalSampling<2>& sampling,
-                                     const std::vector<double>& point_scale, const ReconstructionOptions& o, const Progress& progress);
+/// @brief The mesh adapted to the data's metric (data_metric.h): the sizes of data_mesh across
+/// the data, longer along it where it is flat (metric_adaptation.h: triangles only). Raises
+/// point_scale and sets h_min as data_mesh does.
+SimplexMesh<2> anisotropic_data_mesh(const NearestPointIndex<2>& data, const LocalSampling<2>& sampling, std::vector<double>& point_scale,
+                                     const ReconstructionOptions& o, Index max_vertices, const Progress& progress, double& h_min);
 
 }  // namespace lsr::detail
