@@ -82,7 +82,7 @@ Cli parse(int argc, char** argv) {
               [&](double r) { s.mesh.max_resolution = resolution("--max-resolution", r); })
       .number("max-size", "H", s.mesh.h_max, 1e-4, 1, "coarsest mesh size")
       .number("grading", "C", s.mesh.grading, 1e-3, 100, "mesh grading; smaller = wider fine band")
-      .flag("anisotropic", s.mesh.anisotropic, "2D: adapt the mesh to the data's curvature (long thin triangles along "
+      .flag("anisotropic", s.mesh.anisotropic, "adapt the mesh to the data's curvature (elements long and thin along "
             "flat parts, the paper's section 6.2): fewer vertices")
       .number("anisotropic-error", "E", s.mesh.anisotropic_error, 1e-3, 100,
               "with --anisotropic: the chord error allowed along the data, in local mesh sizes");

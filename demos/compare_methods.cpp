@@ -22,8 +22,8 @@
 
 namespace lsr::demos {
 
-const std::vector<std::string> kMethods = {"lsrecon",       "poisson8", "poisson8-mt", "poisson9", "poisson8-lsrecon",
-                                          "poisson8-true", "mc-hoppe", "mc-rbf",      "gp3"};
+const std::vector<std::string> kMethods = {"lsrecon",       "lsrecon-anisotropic", "poisson8", "poisson8-mt", "poisson9",
+                                          "poisson8-lsrecon", "poisson8-true",    "mc-hoppe", "mc-rbf",      "gp3"};
 
 namespace {
 
@@ -107,12 +107,13 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
   Produced out;
   pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  if (method == "lsrecon" || method == "poisson8-lsrecon") {
+  if (method == "lsrecon" || method == "lsrecon-anisotropic" || method == "poisson8-lsrecon") {
     pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
     ls.setInputCloud(xyz);
     lsr::ReconstructionOptions options;
     options.sampling.hole_radius = s.hole_radius;
     options.mesh.max_resolution = s.max_resolution;
+    options.mesh.anisotropic = method == "lsrecon-anisotropic";
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
@@ -121,10 +122,11 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
                     ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) +
                           (ls.getStatus().sealed_cavities == 1 ? " cavity;" : " cavities;")
                     : std::string()) +
-               (ls.getStatus().open_side_points > 0 ? " open sides closed;" : "") + stage_breakdown(ls.getStatus().stage_seconds);
+               (ls.getStatus().open_side_points > 0 ? " open sides closed;" : "") + " " +
+               std::to_string(ls.getStatus().mesh_vertices) + " mesh vertices;" + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
-    if (method == "lsrecon") return out;
+    if (method != "poisson8-lsrecon") return out;
     // Poisson given lsrecon's oriented normals of the input points.
     Cloud::Ptr cloud(new Cloud);
     pcl::concatenateFields(*xyz, ls.getInputNormals(), *cloud);

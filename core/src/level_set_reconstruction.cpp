@@ -34,7 +34,6 @@ template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
-  if (D == 3 && o.mesh.anisotropic) throw InvalidInput("anisotropic meshes are 2D only for now", "leave anisotropic off for 3D data");
   // Before anything is allocated for the points.
   const Index max_vertices = o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size());
   ReconstructionResult<D> r;
@@ -82,10 +81,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 3. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
   AdaptiveMesh<D> adaptive;
-  if constexpr (D == 2) {
-    if (anisotropic) adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
+  if (anisotropic) {
+    adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
+  } else {
+    adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
   }
-  if (!anisotropic) adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
   const SimplexMesh<D>& mesh = adaptive.mesh;
   r.mesh_vertices = Index(mesh.vertices.size());
   r.mesh_simplices = Index(mesh.simplices.size());
@@ -154,6 +154,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, local_scales(sampling), o.limits.threads, progress);
     attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
+    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, o.limits.threads);
     clock.end("fit");
   } else {
     r.output_level = o.output.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

@@ -219,13 +219,6 @@ TEST_F(BadInput, AbsurdOptionsExitWithTwoNamingTheOption) {
   }
 }
 
-TEST_F(BadInput, AnisotropicMeshesOfThreeDimensionalDataAreRefused) {
-  const CliRun r = run("--demo sphere " + path("o.ply") + " --quiet --anisotropic");
-  EXPECT_EQ(r.status, 1) << r.output;
-  EXPECT_NE(r.output.find("anisotropic meshes are 2D only"), std::string::npos) << r.output;
-  EXPECT_FALSE(fs::exists(path("o.ply")));
-}
-
 TEST_F(BadInput, AThousandThreadsGiveTheSameMeshAsOne) {
   const std::string common = "--demo torus --points 3000 --quiet ";
   ASSERT_EQ(run(common + path("one.off") + " --threads 1").status, 0);

@@ -6,6 +6,7 @@
 
 #include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
+#include "fit/surface_refinement.h"
 #include "fit/mesh_resolution_sample.h"
 #include "fit/sheet_gaps.h"
 #include "sampling/residual_noise.h"
@@ -143,16 +144,22 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
   }
   attach_volume(r, mesh, values, volume);
-  // A curve as fine as an isotropic mesh gives (chords of at most sqrt(2) h <= 1.5 l) where an
-  // anisotropic mesh left long ones; not with a volume mesh, whose boundary is the curve as
-  // extracted.
+}
+
+template <int D>
+void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, int threads) {
+  // Facets longer than 2 l are split: in 3D, l = half a size gives fewer triangles than an
+  // isotropic mesh's extraction and a smaller Chamfer distance (measured: the sphere, torus and
+  // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance).
+  const double share = D == 2 ? 0.75 : 0.5;
+  const auto length = [&](std::size_t i) {
+    const EdgePoint& e = r.surface.sources[i];
+    return share * ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
+  };
   if constexpr (D == 2) {
-    if (!volume) {
-      refine_long_segments(r.surface, r.normals, fit, [&](std::size_t i) {
-        const EdgePoint& e = r.surface.sources[i];
-        return 0.75 * ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
-      }, threads);
-    }
+    refine_long_segments(r.surface, r.normals, fit, length, threads);
+  } else {
+    refine_long_edges(r.surface, r.normals, fit, length, threads);
   }
 }
 
@@ -188,6 +195,8 @@ QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D
                             &nearest, progress);
 }
 
+template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, int);
+template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, int);
 template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&,
                                             const std::vector<double>&, int, const Progress&);
 template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,

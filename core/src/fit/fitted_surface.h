@@ -26,6 +26,13 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
                 bool volume, int threads);
 
+/// @brief On an anisotropic mesh: the output's facets refined onto the fit as finely as an
+/// isotropic mesh would give them (curve_refinement.h, surface_refinement.h), to 0.75 of the
+/// vertex scale interpolated at each output vertex. Not with a volume mesh, whose boundary is
+/// the surface as extracted.
+template <int D>
+void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, int threads);
+
 /// @brief The blended local quadrics through the data (unit box) with their oriented normals;
 /// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that
 /// PCA's thickness also counts. Where the mesh raised point_scale above sampling_scale (the

@@ -41,17 +41,23 @@ AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>&
   return build_adaptive_mesh(data, mesh_options<D>(point_scale, o, max_vertices, h_min), progress);
 }
 
-SimplexMesh<2> anisotropic_data_mesh(const NearestPointIndex<2>& data, const LocalSampling<2>& sampling, std::vector<double>& point_scale,
+template <int D>
+SimplexMesh<D> anisotropic_data_mesh(const NearestPointIndex<D>& data, const LocalSampling<D>& sampling, std::vector<double>& point_scale,
                                      const ReconstructionOptions& o, Index max_vertices, const Progress& progress, double& h_min) {
-  AdaptiveMeshOptions mo = mesh_options<2>(point_scale, o, max_vertices, h_min);
+  AdaptiveMeshOptions mo = mesh_options<D>(point_scale, o, max_vertices, h_min);
   const std::vector<double> size = mo.point_size;
   for (double& x : mo.point_size) x = std::min(kAnisotropicStartCoarsening * x, mo.h_max);
   mo.h_min = std::min(kAnisotropicStartCoarsening * mo.h_min, mo.h_max);
-  const SimplexMesh<2> start = build_adaptive_mesh(data, mo, progress).mesh;
+  const SimplexMesh<D> start = build_adaptive_mesh(data, mo, progress).mesh;
   progress.update("mesh", -1.0);
-  return adapt_to_metric(start, data_metric<2>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
+  const std::vector<double> other_sheet = other_sheets<D>(data, sampling, size, o.limits.threads);
+  return adapt_to_metric(start, data_metric<D>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max, other_sheet));
 }
 
+template SimplexMesh<2> anisotropic_data_mesh<2>(const NearestPointIndex<2>&, const LocalSampling<2>&, std::vector<double>&,
+                                                 const ReconstructionOptions&, Index, const Progress&, double&);
+template SimplexMesh<3> anisotropic_data_mesh<3>(const NearestPointIndex<3>&, const LocalSampling<3>&, std::vector<double>&,
+                                                 const ReconstructionOptions&, Index, const Progress&, double&);
 template AdaptiveMesh<2> data_mesh<2>(const NearestPointIndex<2>&, std::vector<double>&, const ReconstructionOptions&, Index,
                                       const Progress&, double&);
 template AdaptiveMesh<3> data_mesh<3>(const NearestPointIndex<3>&, std::vector<double>&, const ReconstructionOptions&, Index,

@@ -22,9 +22,10 @@ AdaptiveMesh<D> data_mesh(const NearestPointIndex<D>& data, std::vector<double>&
                           Index max_vertices, const Progress& progress, double& h_min);
 
 /// @brief The mesh adapted to the data's metric (data_metric.h): the sizes of data_mesh across
-/// the data, longer along it where it is flat (metric_adaptation.h: triangles only). Raises
-/// point_scale and sets h_min as data_mesh does.
-SimplexMesh<2> anisotropic_data_mesh(const NearestPointIndex<2>& data, const LocalSampling<2>& sampling, std::vector<double>& point_scale,
+/// the data, longer along it where it is flat (metric_adaptation.h). Raises point_scale and
+/// sets h_min as data_mesh does.
+template <int D>
+SimplexMesh<D> anisotropic_data_mesh(const NearestPointIndex<D>& data, const LocalSampling<D>& sampling, std::vector<double>& point_scale,
                                      const ReconstructionOptions& o, Index max_vertices, const Progress& progress, double& h_min);
 
 }  // namespace lsr::detail

@@ -5,7 +5,7 @@
 /// the better shape, vertices relocated. The goal is a unit mesh: every edge of length 1 in the
 /// metric, every element equilateral in it (docs/how-it-works.md, Anisotropic meshes). Vertices
 /// on the faces of the mesh's bounding box stay on them, and its corners stay where they are.
-/// Implemented for triangles (2D).
+/// Triangles (metric_adaptation_2d.cpp) and tetrahedra (metric_adaptation_3d.cpp).
 #pragma once
 
 #include "lsrecon/core/simplex_geometry.h"
@@ -24,7 +24,7 @@ using MetricField = std::function<Metric<D>(const Vec<D>&)>;
 struct MetricAdaptationStats {
   Index splits = 0;
   Index collapses = 0;
-  Index flips = 0;
+  Index flips = 0;  ///< 2D edge flips; 3D 2-3 and 3-2 swaps
   Index moves = 0;
   int cycles = 0;  ///< rounds of split, collapse, flip and relocation
 };
@@ -44,10 +44,16 @@ double metric_length(const Vec<D>& e, const Metric<D>& ma, const Metric<D>& mb);
 /// edge lengths in m; 1 for equilateral in m, 0 for flat, negative when inverted.
 double metric_quality(const std::array<Vec<2>, 3>& x, const Metric<2>& m);
 
+/// @brief The shape of a tetrahedron in m: 12 (3 |T|_m)^(2/3) / sum of its squared edge lengths
+/// in m; 1 for regular in m, 0 for flat, negative when inverted.
+double metric_quality(const std::array<Vec<3>, 4>& x, const Metric<3>& m);
+
 /// @brief Adapts `mesh` (positively oriented, conforming) to `metric` in at most `max_cycles`
 /// rounds, stopping once a round changes fewer than 1% of the vertices. Returns a positively
 /// oriented mesh whose vertices are new (mesh's positions where kept).
 SimplexMesh<2> adapt_to_metric(const SimplexMesh<2>& mesh, const MetricField<2>& metric, int max_cycles = 12,
+                               MetricAdaptationStats* stats = nullptr);
+SimplexMesh<3> adapt_to_metric(const SimplexMesh<3>& mesh, const MetricField<3>& metric, int max_cycles = 12,
                                MetricAdaptationStats* stats = nullptr);
 
 }  // namespace lsr

@@ -63,6 +63,7 @@ class LevelSetReconstruction : public SurfaceReconstruction<PointInT> {
     /// points seen from both sides when open sides were closed, else 0
     /// (lsr::ReconstructionResult::open_side_points)
     long long open_side_points = 0;
+    std::size_t mesh_vertices = 0;  ///< of the mesh the front evolved on
     std::vector<double> residual_history;  ///< per time step, cloud units (convergence plots)
     std::map<std::string, double> stage_seconds;  ///< wall time per pipeline stage
   };

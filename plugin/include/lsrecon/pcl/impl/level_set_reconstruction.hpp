@@ -121,6 +121,7 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       status_.outlier_points = r.outlier_points;
       status_.sealed_cavities = r.sealed_cavities;
       status_.open_side_points = r.open_side_points;
+      status_.mesh_vertices = std::size_t(r.mesh_vertices);
       if (r.status == lsr::ReconstructionStatus::not_converged) {
         // As PCL's own tools say it: the mesh is the best iterate, usable, but the user should know.
         PCL_WARN("[pcl::%s::reconstruct] not converged after %d steps (residual %g > tolerance %g); the best "

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file surface_refinement.cpp
+#include "fit/surface_refinement.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace lsr::detail {
+namespace {
+
+// Bisections in a row: each halves the longest edges, so ten passes shorten them 1000x, far
+// more than the anisotropic sizes' ratio.
+constexpr int kMaxPasses = 10;
+
+}  // namespace
+
+void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const QuadricImplicit<3>& fit,
+                       const std::function<double(std::size_t vertex)>& length, int threads) {
+  std::vector<double> limit(surface.vertices.size());
+  for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = 2.0 * length(v);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    // The long edges, each once, and the midpoint vertex each gets.
+    std::vector<std::pair<Index, Index>> long_edges;
+    for (const auto& f : surface.facets) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        const Index a = f[i], b = f[(i + 1) % 3];
+        const double l = (surface.vertices[std::size_t(b)] - surface.vertices[std::size_t(a)]).norm();
+        if (a < b && l > std::min(limit[std::size_t(a)], limit[std::size_t(b)])) long_edges.emplace_back(a, b);
+      }
+    }
+    if (long_edges.empty()) return;
+    std::sort(long_edges.begin(), long_edges.end());
+    long_edges.erase(std::unique(long_edges.begin(), long_edges.end()), long_edges.end());
+    const Index first_new = Index(surface.vertices.size());
+    Points<3> added(long_edges.size());
+    for (std::size_t k = 0; k < long_edges.size(); ++k) {
+      const auto [a, b] = long_edges[k];
+      added[k] = 0.5 * (surface.vertices[std::size_t(a)] + surface.vertices[std::size_t(b)]);
+      surface.sources.push_back(surface.sources[std::size_t(a)]);
+      limit.push_back(std::min(limit[std::size_t(a)], limit[std::size_t(b)]));
+    }
+    const auto midpoint = [&](Index a, Index b) -> Index {
+      const auto e = std::minmax(a, b);
+      const auto it = std::lower_bound(long_edges.begin(), long_edges.end(), std::make_pair(e.first, e.second));
+      return it != long_edges.end() && *it == std::make_pair(e.first, e.second) ? first_new + Index(it - long_edges.begin()) : -1;
+    };
+    std::vector<std::array<Index, 3>> facets;
+    facets.reserve(surface.facets.size() * 2);
+    for (const auto& f : surface.facets) {
+      std::array<Index, 3> m{midpoint(f[0], f[1]), midpoint(f[1], f[2]), midpoint(f[2], f[0])};
+      const int split = int(m[0] >= 0) + int(m[1] >= 0) + int(m[2] >= 0);
+      if (split == 0) {
+        facets.push_back(f);
+        continue;
+      }
+      if (split == 3) {
+        facets.push_back({f[0], m[0], m[2]});
+        facets.push_back({m[0], f[1], m[1]});
+        facets.push_back({m[2], m[1], f[2]});
+        facets.push_back({m[0], m[1], m[2]});
+        continue;
+      }
+      // Turned so that edge 0 (v0 v1) is split and, with two split, edge 1 too.
+      int r = 0;
+      while (!(m[std::size_t(r)] >= 0 && (split == 1 || m[std::size_t((r + 1) % 3)] >= 0))) ++r;
+      const Index v0 = f[std::size_t(r)], v1 = f[std::size_t((r + 1) % 3)], v2 = f[std::size_t((r + 2) % 3)];
+      const Index m01 = m[std::size_t(r)];
+      if (split == 1) {
+        facets.push_back({v0, m01, v2});
+        facets.push_back({m01, v1, v2});
+        continue;
+      }
+      const Index m12 = m[std::size_t((r + 1) % 3)];
+      facets.push_back({m01, v1, m12});
+      // The quadrilateral v0 m01 m12 v2, cut along its shorter diagonal.
+      const auto at = [&](Index v) -> Vec<3> {
+        return v >= first_new ? added[std::size_t(v - first_new)] : Vec<3>(surface.vertices[std::size_t(v)]);
+      };
+      if ((at(v0) - at(m12)).squaredNorm() <= (at(m01) - at(v2)).squaredNorm()) {
+        facets.push_back({v0, m01, m12});
+        facets.push_back({v0, m12, v2});
+      } else {
+        facets.push_back({v0, m01, v2});
+        facets.push_back({m01, m12, v2});
+      }
+    }
+    const Points<3> added_normals = fit.project(added, threads);
+    surface.vertices.insert(surface.vertices.end(), added.begin(), added.end());
+    normals.insert(normals.end(), added_normals.begin(), added_normals.end());
+    surface.facets = std::move(facets);
+  }
+}
+
+}  // namespace lsr::detail
