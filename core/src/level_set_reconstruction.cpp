@@ -154,7 +154,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, local_scales(sampling), o.limits.threads, progress);
     attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
-    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, o.limits.threads);
+    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
     clock.end("fit");
   } else {
     r.output_level = o.output.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lsr {
@@ -69,6 +70,21 @@ TEST(LevelSetMetric, ExactDerivativesOfCirclesSpheresAndPlanes) {
   Metric<3> directions;
   metric_sizes<3>(level_set_metric<3>(0.1, Vec<3>::Zero(), Metric<3>::Identity(), s), h, directions);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(h[k], s.h_max, 1e-15);
+}
+
+// With a reach R: the sizes along shrink linearly to the size across, which they equal from R
+// on.
+TEST(LevelSetMetric, IsotropicPastTheReach) {
+  MetricSizes s = sizes();
+  s.anisotropic_reach = 0.01;
+  const double radius = 0.3;
+  const Vec<3> n = Vec<3>(1, 2, -2).normalized();
+  for (double d : {0.0, 0.002, -0.005, 0.0099, 0.01, 0.04, -0.1}) {
+    const Metric<3> h = (Metric<3>::Identity() - n * n.transpose()) / (radius + d);
+    Expected e = expected(radius, d, s);
+    e.along = e.across + std::max(0.0, 1.0 - std::abs(d) / s.anisotropic_reach) * (e.along - e.across);
+    expect_sizes<3>(level_set_metric<3>(d, n, h, s), n, e, 1e-12);
+  }
 }
 
 // RMS relative error of the sizes along the level sets, over the vertices within h of the

@@ -147,14 +147,18 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
 }
 
 template <int D>
-void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, int threads) {
+void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
+                     int threads) {
   // Facets longer than 2 l are split: in 3D, l = half a size gives fewer triangles than an
   // isotropic mesh's extraction and a smaller Chamfer distance (measured: the sphere, torus and
-  // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance).
-  const double share = D == 2 ? 0.75 : 0.5;
+  // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance). Past
+  // the band where the mesh is anisotropic (data_metric.h), over holes and open sides, the size
+  // grows as the mesh's does across (MetricSizes::growth), as an isotropic mesh's would.
+  const double share = D == 2 ? 0.75 : 0.5, growth = 0.5, band = 2.0;
   const auto length = [&](std::size_t i) {
     const EdgePoint& e = r.surface.sources[i];
-    return share * ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
+    const auto at = [&](const Eigen::VectorXd& f) { return (1.0 - e.t) * f[e.a] + e.t * f[e.b]; };
+    return share * (at(scale) + growth * std::max(0.0, at(distance) - band * at(scale)));
   };
   if constexpr (D == 2) {
     refine_long_segments(r.surface, r.normals, fit, length, threads);
@@ -195,8 +199,8 @@ QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D
                             &nearest, progress);
 }
 
-template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, int);
-template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, int);
+template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
+template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
 template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&,
                                             const std::vector<double>&, int, const Progress&);
 template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,

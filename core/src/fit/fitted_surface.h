@@ -27,11 +27,12 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
                 bool volume, int threads);
 
 /// @brief On an anisotropic mesh: the output's facets refined onto the fit as finely as an
-/// isotropic mesh would give them (curve_refinement.h, surface_refinement.h), to 0.75 of the
-/// vertex scale interpolated at each output vertex. Not with a volume mesh, whose boundary is
-/// the surface as extracted.
+/// isotropic mesh would give them (curve_refinement.h, surface_refinement.h), to a share of the
+/// vertex scale (growing with the distance to the data) interpolated at each output vertex.
+/// Not with a volume mesh, whose boundary is the surface as extracted.
 template <int D>
-void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, int threads);
+void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
+                     int threads);
 
 /// @brief The blended local quadrics through the data (unit box) with their oriented normals;
 /// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that

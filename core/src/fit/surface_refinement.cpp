@@ -84,7 +84,19 @@ void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const Quadr
         facets.push_back({m01, m12, v2});
       }
     }
-    const Points<3> added_normals = fit.project(added, threads);
+    const Points<3> midpoints = added;
+    Points<3> added_normals = fit.project(added, threads);
+    for (std::size_t k = 0; k < added.size(); ++k) {
+      // A chord's midpoint lies within kappa L^2 / 8 of a smooth surface: a projection farther
+      // than a quarter of the edge went to another part of the fit (where the front, not the
+      // fit, placed the surface: over open sides and holes), and the midpoint stays.
+      const auto [a, b] = long_edges[k];
+      const double l = (surface.vertices[std::size_t(b)] - surface.vertices[std::size_t(a)]).norm();
+      if ((added[k] - midpoints[k]).norm() > 0.25 * l) {
+        added[k] = midpoints[k];
+        added_normals[k] = (normals[std::size_t(a)] + normals[std::size_t(b)]).normalized();
+      }
+    }
     surface.vertices.insert(surface.vertices.end(), added.begin(), added.end());
     normals.insert(normals.end(), added_normals.begin(), added_normals.end());
     surface.facets = std::move(facets);

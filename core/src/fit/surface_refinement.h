@@ -16,7 +16,8 @@ namespace lsr::detail {
 
 /// @brief Bisects every edge longer than twice the smaller `length` of its ends, pass after
 /// pass, projecting the midpoints onto `fit` (their sources are those of the edge's first end,
-/// their normals the fit's). The surface stays closed and consistently oriented.
+/// their normals the fit's) unless that moves them by more than a quarter of the edge. The
+/// surface stays closed and consistently oriented.
 void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const QuadricImplicit<3>& fit,
                        const std::function<double(std::size_t vertex)>& length, int threads);
 

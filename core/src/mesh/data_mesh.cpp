@@ -50,8 +50,7 @@ SimplexMesh<D> anisotropic_data_mesh(const NearestPointIndex<D>& data, const Loc
   mo.h_min = std::min(kAnisotropicStartCoarsening * mo.h_min, mo.h_max);
   const SimplexMesh<D> start = build_adaptive_mesh(data, mo, progress).mesh;
   progress.update("mesh", -1.0);
-  const std::vector<double> other_sheet = other_sheets<D>(data, sampling, size, o.limits.threads);
-  return adapt_to_metric(start, data_metric<D>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max, other_sheet));
+  return adapt_to_metric(start, data_metric<D>(data, sampling, size, o.mesh.anisotropic_error, o.mesh.h_max));
 }
 
 template SimplexMesh<2> anisotropic_data_mesh<2>(const NearestPointIndex<2>&, const LocalSampling<2>&, std::vector<double>&,

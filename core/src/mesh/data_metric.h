@@ -4,10 +4,8 @@
 /// level-set metric of the distance to the curve (surface) through the data point p nearest to
 /// x. Across it, p's mesh size (what the isotropic mesh has there), growing with the distance
 /// |x - p|; along it, sqrt(8 error / kappa) with kappa the curvature of p's height field, so
-/// that a chord of the mesh stays within `error` of the curve, never finer than across, and
-/// at most half the distance to another sheet of data facing p: a front entering a slot between
-/// two sheets moves along them, and stalled at the slot's mouth on elements longer than the
-/// slot is wide (measured: two unit spheres 0.12 apart, at 20k points, merged).
+/// that a chord of the mesh stays within `error` of the curve, never finer than across.
+/// Isotropic from kAnisotropicReach sizes away from the data on (MetricSizes::anisotropic_reach).
 #pragma once
 
 #include "geometry/nearest_point_index.h"
@@ -19,26 +17,21 @@
 
 namespace lsr {
 
+/// @brief Past this many sizes from the data the metric is isotropic. The front's level sets
+/// follow the data only once it has settled there: on its way through slots and gaps, and where
+/// it pinches off a bridge, it runs across the data's directions, on elements long along them
+/// (measured, 3D, 20k points: with the data's metric everywhere two unit spheres 0.12 apart
+/// merged; with 2 sizes they separate on 16k mesh vertices, 5.6x fewer than isotropic; 1 size
+/// needed 25k vertices on the torus, 4 sizes left the spheres' run short of the data).
+inline constexpr double kAnisotropicReach = 2.0;
+
 /// @brief The field over the data. It refers to its arguments, which must outlive it.
 /// @param sampling the data's normals and height fields (HeightFieldsAt::all)
 /// @param point_size #N: the mesh size at each point
 /// @param relative_error the chord error allowed, in units of the point's mesh size
 /// @param h_max the largest size
-/// @param other_sheet #N: the distance from each point to another sheet facing it (other_sheets)
 template <int D>
 MetricField<D> data_metric(const NearestPointIndex<D>& data, const LocalSampling<D>& sampling, const std::vector<double>& point_size,
-                           double relative_error, double h_max, const std::vector<double>& other_sheet);
-
-/// @brief For each point p, the distance to the nearest of its kOtherSheetNeighbours nearest
-/// points that lies off p's tangent plane: higher over it than half its distance to p (on
-/// p's own sheet, only past a curvature radius) and than two mesh sizes at p (the noise); +inf
-/// where none does.
-template <int D>
-std::vector<double> other_sheets(const NearestPointIndex<D>& data, const LocalSampling<D>& sampling, const std::vector<double>& point_size,
-                                 int threads);
-
-/// The neighbours other_sheets looks at: within about 4.5 spacings on a surface, 2.5 times the
-/// along sizes' usual reach on the 3D corpus.
-inline constexpr int kOtherSheetNeighbours = 64;
+                           double relative_error, double h_max);
 
 }  // namespace lsr

@@ -32,7 +32,9 @@ Metric<D> level_set_metric(double u, const Vec<D>& g, const Metric<D>& hessian, 
   const double length = g.norm();
   if (!(length > 0.0)) return Metric<D>::Identity() / (s.h_max * s.h_max);
   const Vec<D> n = g / length;
-  const double across = std::min(s.h_max, s.h_min + s.growth * std::abs(u) / length);
+  const double distance = std::abs(u) / length;
+  const double across = std::min(s.h_max, s.h_min + s.growth * distance);
+  const double anisotropy = std::max(0.0, 1.0 - distance / s.anisotropic_reach);
   Metric<D> m = n * n.transpose() / (across * across);
   // The level set's shape operator in a tangent basis: its eigenvalues are the principal
   // curvatures, its eigenvectors the principal directions.
@@ -41,7 +43,7 @@ Metric<D> level_set_metric(double u, const Vec<D>& g, const Metric<D>& hessian, 
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D - 1, D - 1>> principal(shape);
   for (int i = 0; i < D - 1; ++i) {
     const double kappa = std::abs(principal.eigenvalues()[i]);
-    const double along = kappa > 0.0 ? std::clamp(std::sqrt(8.0 * s.error / kappa), across, s.h_max) : s.h_max;
+    const double along = across + anisotropy * ((kappa > 0.0 ? std::clamp(std::sqrt(8.0 * s.error / kappa), across, s.h_max) : s.h_max) - across);
     const Vec<D> direction = t * principal.eigenvectors().col(i);
     m += direction * direction.transpose() / (along * along);
   }

@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace lsr {
@@ -32,6 +33,9 @@ struct MetricSizes {
   double h_max = 1.0 / 8;    ///< the largest size in any direction
   double error = 1e-4;       ///< the interpolation error allowed along the level set
   double growth = 0.5;       ///< how fast the size across grows with the distance to the level set
+  /// From this distance to the level set on, isotropic (the size across); in between, the sizes
+  /// along shrink linearly towards it.
+  double anisotropic_reach = std::numeric_limits<double>::infinity();
 };
 
 /// @brief The metric at a point where the field has value u, gradient g and Hessian hessian.
