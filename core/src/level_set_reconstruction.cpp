@@ -58,12 +58,13 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
   // unless asked for, every point does.
   const bool rims_only = D == 3;
-  // The anisotropic mesh needs every point's curvature (its height field).
+  // The anisotropic mesh needs every point's curvature (its height field); the rims are still
+  // found for the discs.
   const bool anisotropic = o.mesh.anisotropic;
-  const HeightFieldsAt fields = anisotropic ? HeightFieldsAt::all
-                                : hole_radius <= 0.0 ? HeightFieldsAt::none
-                                : rims_only          ? HeightFieldsAt::rims
-                                                     : HeightFieldsAt::all;
+  const HeightFieldsAt spanning = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
+  const HeightFieldsAt fields = !anisotropic                       ? spanning
+                                : spanning == HeightFieldsAt::rims ? HeightFieldsAt::all_and_rims
+                                                                   : HeightFieldsAt::all;
   LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.

@@ -2,7 +2,7 @@
 /// @file data_metric_test.cpp
 /// @brief The metric the data ask for, on a sampled circle: across, the point's size growing
 /// with the distance; along, sqrt(8 error / kappa) from its height field's curvature, down to
-/// the size across at kAnisotropicReach sizes from the data.
+/// the size across at kAnisotropicReach sizes from the data (none in 2D).
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "mesh/data_metric.h"
 
@@ -34,7 +34,7 @@ TEST(DataMetric, SizesOfASampledCircle) {
       // (2e-4 rad) of the direction n.
       const double distance = data.distance(x);
       const double across = h + 0.5 * distance;
-      const double anisotropy = std::max(0.0, 1.0 - distance / (kAnisotropicReach * h));  // isotropic past the reach
+      const double anisotropy = std::max(0.0, 1.0 - distance / (kAnisotropicReach<2> * h));  // isotropic past the reach
       const double along = across + anisotropy * (std::clamp(std::sqrt(8.0 * relative_error * h * c.radius), across, h_max) - across);
       EXPECT_NEAR(sizes[0], across, 1e-3 * across) << d << " " << t;
       EXPECT_NEAR(sizes[1], along, 1e-2 * along) << d << " " << t;

@@ -7,6 +7,7 @@
 #include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
 #include "fit/surface_refinement.h"
+#include "mesh/data_metric.h"
 #include "fit/mesh_resolution_sample.h"
 #include "fit/sheet_gaps.h"
 #include "sampling/residual_noise.h"
@@ -154,11 +155,12 @@ void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, 
   // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance). Past
   // the band where the mesh is anisotropic (data_metric.h), over holes and open sides, the size
   // grows as the mesh's does across (MetricSizes::growth), as an isotropic mesh's would.
-  const double share = D == 2 ? 0.75 : 0.5, growth = 0.5, band = 2.0;
+  const double share = D == 2 ? 0.75 : 0.5, growth = 0.5, band = kAnisotropicReach<D>;
   const auto length = [&](std::size_t i) {
     const EdgePoint& e = r.surface.sources[i];
     const auto at = [&](const Eigen::VectorXd& f) { return (1.0 - e.t) * f[e.a] + e.t * f[e.b]; };
-    return share * (at(scale) + growth * std::max(0.0, at(distance) - band * at(scale)));
+    const double past = at(distance) - band * at(scale);
+    return share * (at(scale) + (past > 0.0 ? growth * past : 0.0));
   };
   if constexpr (D == 2) {
     refine_long_segments(r.surface, r.normals, fit, length, threads);

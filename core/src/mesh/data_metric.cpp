@@ -27,7 +27,7 @@ MetricField<D> data_metric(const NearestPointIndex<D>& data, const LocalSampling
     sizes.h_min = point_size[p];
     sizes.h_max = std::max(h_max, sizes.h_min);
     sizes.error = relative_error * sizes.h_min;
-    sizes.anisotropic_reach = kAnisotropicReach * sizes.h_min;
+    sizes.anisotropic_reach = kAnisotropicReach<D> * sizes.h_min;
     return level_set_metric<D>(distance, frame.row(D - 1).transpose(), frame.transpose() * tangential * frame, sizes);
   };
 }

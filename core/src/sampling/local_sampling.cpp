@@ -382,7 +382,8 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   progress.update("sampling", -1.0);
   const long n = long(p.size());
   std::vector<double> spacing(p.size()), noise(p.size()), elongation(p.size());
-  const bool rims = height_fields == HeightFieldsAt::rims;
+  const bool rims = height_fields == HeightFieldsAt::rims || height_fields == HeightFieldsAt::all_and_rims;
+  const bool all = height_fields == HeightFieldsAt::all || height_fields == HeightFieldsAt::all_and_rims;
   std::vector<char> open(rims ? p.size() : 0, 0);
   s.normals.resize(p.size());
   s.gap.resize(p.size());
@@ -401,11 +402,11 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t);
   progress.update("sampling", -1.0);
   // 48 bytes a point in 3D: not even allocated for a closed cloud without rims.
-  if (height_fields == HeightFieldsAt::all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
+  if (all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
     s.height_fields.resize(p.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(t)
     for (long i = 0; i < n; ++i) {
-      if (height_fields == HeightFieldsAt::all || s.rim[std::size_t(i)]) {
+      if (all || s.rim[std::size_t(i)]) {
         s.height_fields[i] = fit_height_field(p, &neighbours[std::size_t(i) * k], k, std::size_t(i), s.normals[i]);
       }
     }

@@ -79,8 +79,13 @@ struct LocalSampling {
   static constexpr double kHoleToSpacing = 0.55;
 };
 
-/// @brief Where estimate_local_sampling fits height fields.
-enum class HeightFieldsAt { none, rims, all };
+/// @brief Where estimate_local_sampling fits height fields (and whether it finds the rims).
+enum class HeightFieldsAt {
+  none,
+  rims,           ///< at the rims it finds
+  all,            ///< at every point; no rims looked for
+  all_and_rims    ///< at every point, and the rims found
+};
 
 /// @brief Estimates the sampling scales of every point of the index. Exact duplicates are skipped
 /// when ranking neighbours. Deterministic for any thread count.
