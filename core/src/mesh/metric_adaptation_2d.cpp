@@ -8,6 +8,8 @@
 /// replaces or a fair shape, and a collapse makes no edge longer than sqrt(2).
 #include "mesh/metric_adaptation.h"
 
+#include "mesh/adapted_simplices.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -34,7 +36,7 @@ double metric_quality(const std::array<Vec<2>, 3>& x, const Metric<2>& m) {
 
 namespace {
 
-using Triangle = std::array<Index, 3>;
+using Triangle = detail::AdaptedSimplices<2>::Simplex;
 using Edge = std::pair<Index, Index>;
 
 // A collapse or a relocation may leave elements this good even where the ones they replace
@@ -45,19 +47,11 @@ constexpr double kFairQuality = 0.3;
 // 1-pixel lines, from a coarse start).
 constexpr int kSplitPasses = 2;
 
-class TriangleAdaptation {
+class TriangleAdaptation : public detail::AdaptedSimplices<2> {
  public:
-  TriangleAdaptation(const SimplexMesh<2>& mesh, const MetricField<2>& metric) : metric_(metric) {
-    lo_ = hi_ = mesh.vertices.empty() ? Vec<2>::Zero() : Vec<2>(mesh.vertices[0]);
-    for (const auto& p : mesh.vertices) {
-      lo_ = lo_.cwiseMin(p);
-      hi_ = hi_.cwiseMax(p);
-    }
-    for (const auto& p : mesh.vertices) add_vertex(p, faces_of(p));
-    for (const auto& s : mesh.simplices) add_triangle(s);
+  TriangleAdaptation(const SimplexMesh<2>& mesh, const MetricField<2>& metric) : AdaptedSimplices<2>(mesh, metric) {
+    for (const auto& s : mesh.simplices) add_simplex(s);
   }
-
-  Index vertices() const { return Index(x_.size()) - dead_vertices_; }
 
   // The edges longer than sqrt(2), longest first, in kSplitPasses passes.
   Index split_long_edges() {
@@ -118,65 +112,17 @@ class TriangleAdaptation {
     return n;
   }
 
-  SimplexMesh<2> result() const {
-    SimplexMesh<2> out;
-    std::vector<Index> renumber(x_.size(), -1);
-    for (std::size_t v = 0; v < x_.size(); ++v) {
-      if (dead_[v]) continue;
-      renumber[v] = Index(out.vertices.size());
-      out.vertices.push_back(x_[v]);
-    }
-    for (std::size_t t = 0; t < triangles_.size(); ++t) {
-      if (!alive_[t]) continue;
-      const Triangle& s = triangles_[t];
-      out.simplices.push_back({renumber[std::size_t(s[0])], renumber[std::size_t(s[1])], renumber[std::size_t(s[2])]});
-    }
-    return out;
-  }
-
  private:
-  // Bits 2k and 2k + 1: on the box's low and high face of axis k.
-  unsigned faces_of(const Vec<2>& p) const {
-    unsigned f = 0;
-    for (int k = 0; k < 2; ++k) {
-      const double tol = 1e-12 * (hi_[k] - lo_[k]);
-      if (p[k] <= lo_[k] + tol) f |= 1u << (2 * k);
-      if (p[k] >= hi_[k] - tol) f |= 1u << (2 * k + 1);
-    }
-    return f;
-  }
   static bool corner(unsigned faces) { return (faces & 3u) != 0 && (faces & 12u) != 0; }
-
-  Index add_vertex(const Vec<2>& p, unsigned faces) {
-    x_.push_back(p);
-    m_.push_back(metric_(p));
-    faces_.push_back(faces);
-    dead_.push_back(0);
-    ball_.emplace_back();
-    return Index(x_.size()) - 1;
-  }
-  Index add_triangle(const Triangle& s) {
-    const Index t = Index(triangles_.size());
-    triangles_.push_back(s);
-    alive_.push_back(1);
-    for (Index v : s) ball_[std::size_t(v)].push_back(t);
-    return t;
-  }
-  void leave_ball(Index v, Index t) {
-    auto& b = ball_[std::size_t(v)];
-    const auto it = std::find(b.begin(), b.end(), t);
-    *it = b.back();
-    b.pop_back();
-  }
 
   // Every edge once: an inner edge from the triangle that runs it from its lower vertex, an
   // edge of the box from its only triangle.
   std::vector<Edge> edges() const {
     std::vector<Edge> e;
-    e.reserve(2 * triangles_.size());
-    for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    e.reserve(2 * simplices_.size());
+    for (std::size_t t = 0; t < simplices_.size(); ++t) {
       if (!alive_[t]) continue;
-      const Triangle& s = triangles_[t];
+      const Triangle& s = simplices_[t];
       for (int i = 0; i < 3; ++i) {
         const Index a = s[std::size_t(i)], b = s[std::size_t((i + 1) % 3)];
         if (a < b) {
@@ -189,22 +135,6 @@ class TriangleAdaptation {
     return e;
   }
 
-  double length(Index a, Index b) const {
-    return metric_length<2>(x_[std::size_t(b)] - x_[std::size_t(a)], m_[std::size_t(a)], m_[std::size_t(b)]);
-  }
-  // The shape of s, in the mean of its vertices' metrics; x_[moved] read as `at` if given.
-  double quality(const Triangle& s, Index moved = -1, const Vec<2>& at = Vec<2>::Zero()) const {
-    std::array<Vec<2>, 3> p;
-    Metric<2> m = Metric<2>::Zero();
-    for (int i = 0; i < 3; ++i) {
-      const auto v = std::size_t(s[std::size_t(i)]);
-      p[std::size_t(i)] = s[std::size_t(i)] == moved ? at : x_[v];
-      m += m_[v] / 3.0;
-    }
-    return metric_quality(p, m);
-  }
-
-  static bool contains(const Triangle& s, Index v) { return s[0] == v || s[1] == v || s[2] == v; }
   static Index third(const Triangle& s, Index a, Index b) {
     for (Index v : s) {
       if (v != a && v != b) return v;
@@ -223,7 +153,7 @@ class TriangleAdaptation {
   Pair shared(Index a, Index b) const {
     Pair out;
     for (Index t : ball_[std::size_t(a)]) {
-      if (out.n < 2 && contains(triangles_[std::size_t(t)], b)) out.t[out.n++] = t;
+      if (out.n < 2 && contains(simplices_[std::size_t(t)], b)) out.t[out.n++] = t;
     }
     return out;
   }
@@ -231,7 +161,7 @@ class TriangleAdaptation {
   void neighbours(Index v, std::vector<Index>& out) const {
     out.clear();
     for (Index t : ball_[std::size_t(v)]) {
-      for (Index w : triangles_[std::size_t(t)]) {
+      for (Index w : simplices_[std::size_t(t)]) {
         if (w != v) out.push_back(w);
       }
     }
@@ -244,19 +174,19 @@ class TriangleAdaptation {
     const Pair around = shared(a, b);
     const Vec<2> m = 0.5 * (x_[std::size_t(a)] + x_[std::size_t(b)]);
     for (Index t : around) {
-      const Triangle& s = triangles_[std::size_t(t)];
+      const Triangle& s = simplices_[std::size_t(t)];
       const Vec<2> p = x_[std::size_t(third(s, a, b))];
       const auto area = [&](const Vec<2>& u, const Vec<2>& v) { return (u - p).x() * (v - p).y() - (u - p).y() * (v - p).x(); };
       if (!(std::abs(area(x_[std::size_t(a)], m)) > 0.0 && std::abs(area(m, x_[std::size_t(b)])) > 0.0)) return false;
     }
     const Index c = add_vertex(m, faces_[std::size_t(a)] & faces_[std::size_t(b)]);
     for (Index t : around) {
-      Triangle half = triangles_[std::size_t(t)];
+      Triangle half = simplices_[std::size_t(t)];
       std::replace(half.begin(), half.end(), a, c);
-      std::replace(triangles_[std::size_t(t)].begin(), triangles_[std::size_t(t)].end(), b, c);
+      std::replace(simplices_[std::size_t(t)].begin(), simplices_[std::size_t(t)].end(), b, c);
       leave_ball(b, t);
       ball_[std::size_t(c)].push_back(t);
-      add_triangle(half);
+      add_simplex(half);
     }
     return true;
   }
@@ -285,14 +215,14 @@ class TriangleAdaptation {
     }
     double before = std::numeric_limits<double>::infinity(), after = before;
     for (Index t : ball_[std::size_t(a)]) {
-      const Triangle& s = triangles_[std::size_t(t)];
+      const Triangle& s = simplices_[std::size_t(t)];
       before = std::min(before, quality(s));
       if (!contains(s, b)) after = std::min(after, quality(s, a, x_[std::size_t(b)]));
     }
     if (!(after > 0.0) || after < std::min(before, kFairQuality)) return false;
     moved_ = ball_[std::size_t(a)];
     for (Index t : moved_) {
-      Triangle& s = triangles_[std::size_t(t)];
+      Triangle& s = simplices_[std::size_t(t)];
       if (contains(s, b)) {
         alive_[std::size_t(t)] = 0;
         for (Index v : s) {
@@ -315,17 +245,17 @@ class TriangleAdaptation {
     if (around.size() != 2) return false;
     Index t1 = around.t[0], t2 = around.t[1];
     // t1 = (a, b, c) in its orientation, t2 = (b, a, d).
-    const Triangle& s1 = triangles_[std::size_t(t1)];
+    const Triangle& s1 = simplices_[std::size_t(t1)];
     const auto ia = std::size_t(std::find(s1.begin(), s1.end(), a) - s1.begin());
     if (s1[(ia + 1) % 3] != b) std::swap(t1, t2);
-    const Index c = third(triangles_[std::size_t(t1)], a, b), d = third(triangles_[std::size_t(t2)], a, b);
+    const Index c = third(simplices_[std::size_t(t1)], a, b), d = third(simplices_[std::size_t(t2)], a, b);
     if (!shared(c, d).empty()) return false;
     const Triangle n1{c, a, d}, n2{c, d, b};
-    const double before = std::min(quality(triangles_[std::size_t(t1)]), quality(triangles_[std::size_t(t2)]));
+    const double before = std::min(quality(simplices_[std::size_t(t1)]), quality(simplices_[std::size_t(t2)]));
     const double after = std::min(quality(n1), quality(n2));
     if (!(after > before * (1.0 + 1e-3) + 1e-12)) return false;
-    triangles_[std::size_t(t1)] = n1;
-    triangles_[std::size_t(t2)] = n2;
+    simplices_[std::size_t(t1)] = n1;
+    simplices_[std::size_t(t2)] = n2;
     leave_ball(a, t2);
     leave_ball(b, t1);
     ball_[std::size_t(c)].push_back(t2);
@@ -350,11 +280,11 @@ class TriangleAdaptation {
       if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
     }
     double before = std::numeric_limits<double>::infinity();
-    for (Index t : ball_[vi]) before = std::min(before, quality(triangles_[std::size_t(t)]));
+    for (Index t : ball_[vi]) before = std::min(before, quality(simplices_[std::size_t(t)]));
     for (double step = 1.0; step > 0.1; step *= 0.5) {
       const Vec<2> p = x_[vi] + step * (target - x_[vi]);
       double after = std::numeric_limits<double>::infinity();
-      for (Index t : ball_[vi]) after = std::min(after, quality(triangles_[std::size_t(t)], v, p));
+      for (Index t : ball_[vi]) after = std::min(after, quality(simplices_[std::size_t(t)], v, p));
       if (after > before * (1.0 + 1e-3)) {
         x_[vi] = p;
         m_[vi] = metric_(p);
@@ -364,16 +294,6 @@ class TriangleAdaptation {
     return false;
   }
 
-  const MetricField<2>& metric_;
-  Vec<2> lo_, hi_;
-  std::vector<Vec<2>> x_;
-  std::vector<Metric<2>> m_;
-  std::vector<unsigned> faces_;
-  std::vector<char> dead_;
-  Index dead_vertices_ = 0;
-  std::vector<std::vector<Index>> ball_;
-  std::vector<Triangle> triangles_;
-  std::vector<char> alive_;
   std::vector<Index> na_, nb_, moved_;  // scratch lists, reused
 };
 

@@ -10,6 +10,8 @@
 /// positive (the ball is then star-shaped from the kept vertex).
 #include "mesh/metric_adaptation.h"
 
+#include "mesh/adapted_simplices.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,7 +33,7 @@ double metric_quality(const std::array<Vec<3>, 4>& x, const Metric<3>& m) {
 
 namespace {
 
-using Tet = std::array<Index, 4>;
+using Tet = detail::AdaptedSimplices<3>::Simplex;
 using Edge = std::pair<Index, Index>;
 
 // As in 2D: the shape a collapse or a relocation may always reach, and the split passes a round.
@@ -52,19 +54,11 @@ double volume6(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& 
   return (b - a).dot((c - a).cross(d - a));
 }
 
-class TetAdaptation {
+class TetAdaptation : public detail::AdaptedSimplices<3> {
  public:
-  TetAdaptation(const SimplexMesh<3>& mesh, const MetricField<3>& metric) : metric_(metric) {
-    lo_ = hi_ = mesh.vertices.empty() ? Vec<3>::Zero() : Vec<3>(mesh.vertices[0]);
-    for (const auto& p : mesh.vertices) {
-      lo_ = lo_.cwiseMin(p);
-      hi_ = hi_.cwiseMax(p);
-    }
-    for (const auto& p : mesh.vertices) add_vertex(p, faces_of(p));
+  TetAdaptation(const SimplexMesh<3>& mesh, const MetricField<3>& metric) : AdaptedSimplices<3>(mesh, metric) {
     for (const auto& s : mesh.simplices) add_tet(s);
   }
-
-  Index vertices() const { return Index(x_.size()) - dead_vertices_; }
 
   Index split_long_edges() {
     Index n = 0;
@@ -111,12 +105,12 @@ class TetAdaptation {
     for (int sweep = 0; sweep < 8; ++sweep) {
       Index k = 0;
       for (const Edge& e : edges()) k += swap32(e.first, e.second) ? 1 : 0;
-      const std::size_t tets = tets_.size();
+      const std::size_t tets = simplices_.size();
       for (std::size_t t = 0; t < tets; ++t) {
         for (int f = 0; f < 4 && alive_[t]; ++f) k += swap23(Index(t), f) ? 1 : 0;
       }
       n += k;
-      if (double(k) < 0.01 * double(tets_.size() - std::size_t(dead_tets_))) break;
+      if (double(k) < 0.01 * double(simplices_.size() - std::size_t(dead_simplices_))) break;
     }
     return n;
   }
@@ -127,71 +121,25 @@ class TetAdaptation {
     return n;
   }
 
-  SimplexMesh<3> result() const {
-    SimplexMesh<3> out;
-    std::vector<Index> renumber(x_.size(), -1);
-    for (std::size_t v = 0; v < x_.size(); ++v) {
-      if (dead_[v]) continue;
-      renumber[v] = Index(out.vertices.size());
-      out.vertices.push_back(x_[v]);
-    }
-    for (std::size_t t = 0; t < tets_.size(); ++t) {
-      if (!alive_[t]) continue;
-      Tet s = tets_[t];
-      for (Index& v : s) v = renumber[std::size_t(v)];
-      out.simplices.push_back(s);
-    }
-    return out;
-  }
-
  private:
-  // Bits 2k and 2k + 1: on the box's low and high face of axis k.
-  unsigned faces_of(const Vec<3>& p) const {
-    unsigned f = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double tol = 1e-12 * (hi_[k] - lo_[k]);
-      if (p[k] <= lo_[k] + tol) f |= 1u << (2 * k);
-      if (p[k] >= hi_[k] - tol) f |= 1u << (2 * k + 1);
-    }
-    return f;
-  }
-
-  Index add_vertex(const Vec<3>& p, unsigned faces) {
-    x_.push_back(p);
-    m_.push_back(metric_(p));
-    faces_.push_back(faces);
-    dead_.push_back(0);
-    stamp_.push_back(0);
-    ball_.emplace_back();
-    return Index(x_.size()) - 1;
-  }
   Index add_tet(const Tet& s) {
-    const Index t = Index(tets_.size());
-    tets_.push_back(s);
-    alive_.push_back(1);
     q_.push_back(quality(s));
-    for (Index v : s) ball_[std::size_t(v)].push_back(t);
-    return t;
-  }
-  void leave_ball(Index v, Index t) {
-    auto& b = ball_[std::size_t(v)];
-    const auto it = std::find(b.begin(), b.end(), t);
-    *it = b.back();
-    b.pop_back();
+    return add_simplex(s);
   }
   void remove_tet(Index t) {
     alive_[std::size_t(t)] = 0;
-    ++dead_tets_;
-    for (Index v : tets_[std::size_t(t)]) leave_ball(v, t);
+    ++dead_simplices_;
+    for (Index v : simplices_[std::size_t(t)]) leave_ball(v, t);
   }
 
   // Every edge once, from its lower vertex, in the order of the vertices.
   std::vector<Edge> edges() {
     std::vector<Edge> e;
     e.reserve(x_.size() * 8);
+    stamp_.resize(x_.size(), 0);
     for (Index v = 0; v < Index(x_.size()); ++v) {
       for (Index t : ball_[std::size_t(v)]) {
-        for (Index w : tets_[std::size_t(t)]) {
+        for (Index w : simplices_[std::size_t(t)]) {
           if (w > v && stamp_[std::size_t(w)] != v + 1) {
             stamp_[std::size_t(w)] = v + 1;
             e.emplace_back(v, w);
@@ -203,37 +151,23 @@ class TetAdaptation {
     return e;
   }
 
-  double length(Index a, Index b) const {
-    return metric_length<3>(x_[std::size_t(b)] - x_[std::size_t(a)], m_[std::size_t(a)], m_[std::size_t(b)]);
-  }
-  // The shape of s in the mean of its vertices' metrics; x_[moved] read as `at` if given.
-  double quality(const Tet& s, Index moved = -1, const Vec<3>& at = Vec<3>::Zero()) const {
-    std::array<Vec<3>, 4> p;
-    Metric<3> m = Metric<3>::Zero();
-    for (std::size_t i = 0; i < 4; ++i) {
-      const auto v = std::size_t(s[i]);
-      p[i] = s[i] == moved ? at : x_[v];
-      m += m_[v] / 4.0;
-    }
-    return metric_quality(p, m);
-  }
   double volume(const Tet& s) const {
     return volume6(x_[std::size_t(s[0])], x_[std::size_t(s[1])], x_[std::size_t(s[2])], x_[std::size_t(s[3])]);
   }
 
-  static bool contains(const Tet& s, Index v) { return s[0] == v || s[1] == v || s[2] == v || s[3] == v; }
   // The tetrahedra around edge ab, into `out`.
   void shell(Index a, Index b, std::vector<Index>& out) const {
     out.clear();
     for (Index t : ball_[std::size_t(a)]) {
-      if (contains(tets_[std::size_t(t)], b)) out.push_back(t);
+      if (contains(simplices_[std::size_t(t)], b)) out.push_back(t);
     }
   }
   // The vertices sharing an edge with v, into `out` (reused: no allocation per call).
   void neighbours(Index v, std::vector<Index>& out) {
     out.clear();
+    stamp_.resize(x_.size(), 0);
     for (Index t : ball_[std::size_t(v)]) {
-      for (Index w : tets_[std::size_t(t)]) {
+      for (Index w : simplices_[std::size_t(t)]) {
         if (w != v && stamp_[std::size_t(w)] != v + 1) {
           stamp_[std::size_t(w)] = v + 1;
           out.push_back(w);
@@ -247,7 +181,7 @@ class TetAdaptation {
   bool split(Index a, Index b) {
     const Vec<3> m = 0.5 * (x_[std::size_t(a)] + x_[std::size_t(b)]);
     for (Index t : shell_) {
-      Tet half_a = tets_[std::size_t(t)], half_b = half_a;
+      Tet half_a = simplices_[std::size_t(t)], half_b = half_a;
       std::replace(half_a.begin(), half_a.end(), a, Index(-1));
       std::replace(half_b.begin(), half_b.end(), b, Index(-1));
       const auto at = [&](Index v) { return v < 0 ? m : Vec<3>(x_[std::size_t(v)]); };
@@ -259,15 +193,15 @@ class TetAdaptation {
       // it replaces): without that, splits in a metric that jumps between data points
       // flattened the same tetrahedra round after round (measured: the 20k limb, worst shape
       // 4e-10 after 12 rounds).
-      const Tet& s = tets_[std::size_t(t)];
+      const Tet& s = simplices_[std::size_t(t)];
       const double keep = std::min(q_[std::size_t(t)], kSplitFloor);
       if (quality(s, a, m) < keep || quality(s, b, m) < keep) return false;
     }
     const Index c = add_vertex(m, faces_[std::size_t(a)] & faces_[std::size_t(b)]);
     for (Index t : shell_) {
-      Tet half = tets_[std::size_t(t)];
+      Tet half = simplices_[std::size_t(t)];
       std::replace(half.begin(), half.end(), a, c);
-      Tet& s = tets_[std::size_t(t)];
+      Tet& s = simplices_[std::size_t(t)];
       std::replace(s.begin(), s.end(), b, c);
       q_[std::size_t(t)] = quality(s);
       leave_ball(b, t);
@@ -287,7 +221,7 @@ class TetAdaptation {
     }
     double before = std::numeric_limits<double>::infinity(), after = before;
     for (Index t : ball_[std::size_t(a)]) {
-      const Tet& s = tets_[std::size_t(t)];
+      const Tet& s = simplices_[std::size_t(t)];
       before = std::min(before, q_[std::size_t(t)]);
       if (contains(s, b)) continue;
       Tet moved = s;
@@ -298,7 +232,7 @@ class TetAdaptation {
     if (!(after > 0.0) || after < std::min(before, kFairQuality)) return false;
     moved_ = ball_[std::size_t(a)];
     for (Index t : moved_) {
-      Tet& s = tets_[std::size_t(t)];
+      Tet& s = simplices_[std::size_t(t)];
       if (contains(s, b)) {
         remove_tet(t);
       } else {
@@ -323,7 +257,7 @@ class TetAdaptation {
     double before = std::numeric_limits<double>::infinity();
     for (Index t : shell_) {
       before = std::min(before, q_[std::size_t(t)]);
-      for (Index v : tets_[std::size_t(t)]) {
+      for (Index v : simplices_[std::size_t(t)]) {
         if (v != a && v != b && std::find(ring_.begin(), ring_.end(), v) == ring_.end()) ring_.push_back(v);
       }
     }
@@ -343,12 +277,12 @@ class TetAdaptation {
   // edge joining their apexes, if the edge crosses the face and the worse shape improves;
   // looked at from the side of a bad t.
   bool swap23(Index t, int f) {
-    const Tet s = tets_[std::size_t(t)];
+    const Tet s = simplices_[std::size_t(t)];
     if (q_[std::size_t(t)] >= kSwapBelow) return false;
     const Index a = s[std::size_t((f + 1) % 4)], b = s[std::size_t((f + 2) % 4)], c = s[std::size_t((f + 3) % 4)];
     Index other = -1;
     for (Index u : ball_[std::size_t(a)]) {
-      const Tet& w = tets_[std::size_t(u)];
+      const Tet& w = simplices_[std::size_t(u)];
       if (u != t && contains(w, b) && contains(w, c)) {
         other = u;
         break;
@@ -356,7 +290,7 @@ class TetAdaptation {
     }
     if (other < 0) return false;  // on the box
     Index e = -1;
-    for (Index v : tets_[std::size_t(other)]) {
+    for (Index v : simplices_[std::size_t(other)]) {
       if (v != a && v != b && v != c) e = v;
     }
     // Each new tetrahedron is s with one vertex of the face replaced by e.
@@ -396,30 +330,20 @@ class TetAdaptation {
     for (double step = 1.0; step > 0.1; step *= 0.5) {
       const Vec<3> p = x_[vi] + step * (target - x_[vi]);
       double after = std::numeric_limits<double>::infinity();
-      for (Index t : ball_[vi]) after = std::min(after, quality(tets_[std::size_t(t)], v, p));
+      for (Index t : ball_[vi]) after = std::min(after, quality(simplices_[std::size_t(t)], v, p));
       if (after > before * (1.0 + 1e-3)) {
         x_[vi] = p;
         m_[vi] = metric_(p);
-        for (Index t : ball_[vi]) q_[std::size_t(t)] = quality(tets_[std::size_t(t)]);
+        for (Index t : ball_[vi]) q_[std::size_t(t)] = quality(simplices_[std::size_t(t)]);
         return true;
       }
     }
     return false;
   }
 
-  const MetricField<3>& metric_;
-  Vec<3> lo_, hi_;
-  std::vector<Vec<3>> x_;
-  std::vector<Metric<3>> m_;
-  std::vector<unsigned> faces_;
-  std::vector<char> dead_;
   std::vector<Index> stamp_;  // per vertex: the last vertex + 1 whose edges listed it
-  Index dead_vertices_ = 0;
-  std::vector<std::vector<Index>> ball_;
-  std::vector<Tet> tets_;
-  std::vector<char> alive_;
-  std::vector<double> q_;  // per tetrahedron: its quality, kept up to date
-  Index dead_tets_ = 0;
+  std::vector<double> q_;     // per tetrahedron: its quality, kept up to date
+  Index dead_simplices_ = 0;
   std::vector<Index> na_, moved_, shell_, ring_;  // scratch lists, reused
 };
 

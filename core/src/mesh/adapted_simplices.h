@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file adapted_simplices.h
+/// @brief What the adaptation to a metric keeps of a mesh while it changes it, in 2D and 3D
+/// (metric_adaptation_2d.cpp, metric_adaptation_3d.cpp): vertices with their metric and the box
+/// faces they lie on, simplices with a ball per vertex, lengths and shapes in the metric.
+/// Removed vertices and simplices are marked dead, and dropped by result().
+#pragma once
+
+#include "mesh/metric_adaptation.h"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace lsr::detail {
+
+template <int D>
+class AdaptedSimplices {
+ public:
+  using Simplex = std::array<Index, D + 1>;
+
+  Index vertices() const { return Index(x_.size()) - dead_vertices_; }
+
+  SimplexMesh<D> result() const {
+    SimplexMesh<D> out;
+    std::vector<Index> renumber(x_.size(), -1);
+    for (std::size_t v = 0; v < x_.size(); ++v) {
+      if (dead_[v]) continue;
+      renumber[v] = Index(out.vertices.size());
+      out.vertices.push_back(x_[v]);
+    }
+    for (std::size_t t = 0; t < simplices_.size(); ++t) {
+      if (!alive_[t]) continue;
+      Simplex s = simplices_[t];
+      for (Index& v : s) v = renumber[std::size_t(v)];
+      out.simplices.push_back(s);
+    }
+    return out;
+  }
+
+ protected:
+  // The mesh's vertices (its simplices are the caller's to add).
+  AdaptedSimplices(const SimplexMesh<D>& mesh, const MetricField<D>& metric) : metric_(metric) {
+    lo_ = hi_ = mesh.vertices.empty() ? Vec<D>::Zero() : Vec<D>(mesh.vertices[0]);
+    for (const auto& p : mesh.vertices) {
+      lo_ = lo_.cwiseMin(p);
+      hi_ = hi_.cwiseMax(p);
+    }
+    for (const auto& p : mesh.vertices) add_vertex(p, faces_of(p));
+  }
+
+  // Bits 2k and 2k + 1: on the box's low and high face of axis k.
+  unsigned faces_of(const Vec<D>& p) const {
+    unsigned f = 0;
+    for (int k = 0; k < D; ++k) {
+      const double tol = 1e-12 * (hi_[k] - lo_[k]);
+      if (p[k] <= lo_[k] + tol) f |= 1u << (2 * k);
+      if (p[k] >= hi_[k] - tol) f |= 1u << (2 * k + 1);
+    }
+    return f;
+  }
+
+  Index add_vertex(const Vec<D>& p, unsigned faces) {
+    x_.push_back(p);
+    m_.push_back(metric_(p));
+    faces_.push_back(faces);
+    dead_.push_back(0);
+    ball_.emplace_back();
+    return Index(x_.size()) - 1;
+  }
+  Index add_simplex(const Simplex& s) {
+    const Index t = Index(simplices_.size());
+    simplices_.push_back(s);
+    alive_.push_back(1);
+    for (Index v : s) ball_[std::size_t(v)].push_back(t);
+    return t;
+  }
+  void leave_ball(Index v, Index t) {
+    auto& b = ball_[std::size_t(v)];
+    const auto it = std::find(b.begin(), b.end(), t);
+    *it = b.back();
+    b.pop_back();
+  }
+
+  double length(Index a, Index b) const {
+    return metric_length<D>(x_[std::size_t(b)] - x_[std::size_t(a)], m_[std::size_t(a)], m_[std::size_t(b)]);
+  }
+  // The shape of s in the mean of its vertices' metrics; x_[moved] read as `at` if given.
+  double quality(const Simplex& s, Index moved = -1, const Vec<D>& at = Vec<D>::Zero()) const {
+    std::array<Vec<D>, D + 1> p;
+    Metric<D> m = Metric<D>::Zero();
+    for (std::size_t i = 0; i < D + 1; ++i) {
+      const auto v = std::size_t(s[i]);
+      p[i] = s[i] == moved ? at : x_[v];
+      m += m_[v] / double(D + 1);
+    }
+    return metric_quality(p, m);
+  }
+  static bool contains(const Simplex& s, Index v) { return std::find(s.begin(), s.end(), v) != s.end(); }
+
+  const MetricField<D>& metric_;
+  Vec<D> lo_, hi_;
+  std::vector<Vec<D>> x_;
+  std::vector<Metric<D>> m_;
+  std::vector<unsigned> faces_;
+  std::vector<char> dead_;
+  Index dead_vertices_ = 0;
+  std::vector<std::vector<Index>> ball_;
+  std::vector<Simplex> simplices_;
+  std::vector<char> alive_;
+};
+
+}  // namespace lsr::detail
