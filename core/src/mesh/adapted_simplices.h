@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace lsr::detail {
@@ -18,6 +20,7 @@ template <int D>
 class AdaptedSimplices {
  public:
   using Simplex = std::array<Index, D + 1>;
+  using Edge = std::pair<Index, Index>;
 
   Index vertices() const { return Index(x_.size()) - dead_vertices_; }
 
@@ -97,6 +100,54 @@ class AdaptedSimplices {
     return metric_quality(p, m);
   }
   static bool contains(const Simplex& s, Index v) { return std::find(s.begin(), s.end(), v) != s.end(); }
+
+  // Of `edges`, those longer than kLongEdge, longest first (`longer`), or shorter than
+  // kShortEdge, shortest first.
+  std::vector<Edge> out_of_bounds(const std::vector<Edge>& edges, bool longer) const {
+    std::vector<std::pair<double, Edge>> picked;
+    for (const Edge& e : edges) {
+      const double l = length(e.first, e.second);
+      if (longer ? l > kLongEdge : l < kShortEdge) picked.emplace_back(longer ? -l : l, e);
+    }
+    std::sort(picked.begin(), picked.end());
+    std::vector<Edge> out;
+    out.reserve(picked.size());
+    for (const auto& p : picked) out.push_back(p.second);
+    return out;
+  }
+
+  // The mean of the points at unit length from each of v's neighbours `around` on the way to v,
+  // kept on the box faces v lies on.
+  Vec<D> unit_length_target(Index v, const std::vector<Index>& around) const {
+    const auto vi = std::size_t(v);
+    Vec<D> target = Vec<D>::Zero();
+    for (Index w : around) {
+      const Vec<D>& q = x_[std::size_t(w)];
+      target += q + (x_[vi] - q) / std::max(length(w, v), 1e-12);
+    }
+    target /= double(around.size());
+    for (int k = 0; k < D; ++k) {
+      if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
+    }
+    return target;
+  }
+
+  // v moved all, half or a quarter of the way to `target`, the first that raises the worst shape
+  // of its ball above `before` (by 0.1%); false if none does.
+  bool move_towards(Index v, const Vec<D>& target, double before) {
+    const auto vi = std::size_t(v);
+    for (double step = 1.0; step > 0.1; step *= 0.5) {
+      const Vec<D> p = x_[vi] + step * (target - x_[vi]);
+      double after = std::numeric_limits<double>::infinity();
+      for (Index t : ball_[vi]) after = std::min(after, quality(simplices_[std::size_t(t)], v, p));
+      if (after > before * (1.0 + 1e-3)) {
+        x_[vi] = p;
+        m_[vi] = metric_(p);
+        return true;
+      }
+    }
+    return false;
+  }
 
   const MetricField<D>& metric_;
   Vec<D> lo_, hi_;

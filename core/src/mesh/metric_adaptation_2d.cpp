@@ -57,14 +57,9 @@ class TriangleAdaptation : public detail::AdaptedSimplices<2> {
   Index split_long_edges() {
     Index n = 0;
     for (int pass = 0; pass < kSplitPasses; ++pass) {
-      std::vector<std::pair<double, Edge>> longer;
-      for (const Edge& e : edges()) {
-        const double l = length(e.first, e.second);
-        if (l > kLongEdge) longer.emplace_back(-l, e);
-      }
+      const std::vector<Edge> longer = out_of_bounds(edges(), true);
       if (longer.empty()) break;
-      std::sort(longer.begin(), longer.end());
-      for (const auto& [l, e] : longer) {
+      for (const Edge& e : longer) {
         if (shared(e.first, e.second).empty()) continue;  // split already, as a neighbour's side
         n += split(e.first, e.second) ? 1 : 0;
       }
@@ -73,15 +68,8 @@ class TriangleAdaptation : public detail::AdaptedSimplices<2> {
   }
 
   Index collapse_short_edges() {
-    std::vector<std::pair<double, Edge>> shorter;
-    for (const Edge& e : edges()) {
-      const double l = length(e.first, e.second);
-      if (l < kShortEdge) shorter.emplace_back(l, e);
-    }
-    std::sort(shorter.begin(), shorter.end());
     Index n = 0;
-    for (const auto& [l, e] : shorter) {
-      const auto [a, b] = e;
+    for (const auto& [a, b] : out_of_bounds(edges(), false)) {
       if (dead_[std::size_t(a)] || dead_[std::size_t(b)] || shared(a, b).empty() || length(a, b) >= kShortEdge) continue;
       if (collapse(a, b) || collapse(b, a)) ++n;
     }
@@ -270,28 +258,10 @@ class TriangleAdaptation : public detail::AdaptedSimplices<2> {
     const auto vi = std::size_t(v);
     if (dead_[vi] || corner(faces_[vi])) return false;
     neighbours(v, na_);
-    Vec<2> target = Vec<2>::Zero();
-    for (Index w : na_) {
-      const Vec<2>& q = x_[std::size_t(w)];
-      target += q + (x_[vi] - q) / std::max(length(w, v), 1e-12);
-    }
-    target /= double(na_.size());
-    for (int k = 0; k < 2; ++k) {
-      if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
-    }
+    const Vec<2> target = unit_length_target(v, na_);
     double before = std::numeric_limits<double>::infinity();
     for (Index t : ball_[vi]) before = std::min(before, quality(simplices_[std::size_t(t)]));
-    for (double step = 1.0; step > 0.1; step *= 0.5) {
-      const Vec<2> p = x_[vi] + step * (target - x_[vi]);
-      double after = std::numeric_limits<double>::infinity();
-      for (Index t : ball_[vi]) after = std::min(after, quality(simplices_[std::size_t(t)], v, p));
-      if (after > before * (1.0 + 1e-3)) {
-        x_[vi] = p;
-        m_[vi] = metric_(p);
-        return true;
-      }
-    }
-    return false;
+    return move_towards(v, target, before);
   }
 
   std::vector<Index> na_, nb_, moved_;  // scratch lists, reused

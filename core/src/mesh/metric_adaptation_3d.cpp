@@ -63,14 +63,9 @@ class TetAdaptation : public detail::AdaptedSimplices<3> {
   Index split_long_edges() {
     Index n = 0;
     for (int pass = 0; pass < kSplitPasses; ++pass) {
-      std::vector<std::pair<double, Edge>> longer;
-      for (const Edge& e : edges()) {
-        const double l = length(e.first, e.second);
-        if (l > kLongEdge) longer.emplace_back(-l, e);
-      }
+      const std::vector<Edge> longer = out_of_bounds(edges(), true);
       if (longer.empty()) break;
-      std::sort(longer.begin(), longer.end());
-      for (const auto& [l, e] : longer) {
+      for (const Edge& e : longer) {
         shell(e.first, e.second, shell_);
         if (shell_.empty()) continue;  // split already, as a neighbour's edge
         n += split(e.first, e.second) ? 1 : 0;
@@ -80,15 +75,8 @@ class TetAdaptation : public detail::AdaptedSimplices<3> {
   }
 
   Index collapse_short_edges() {
-    std::vector<std::pair<double, Edge>> shorter;
-    for (const Edge& e : edges()) {
-      const double l = length(e.first, e.second);
-      if (l < kShortEdge) shorter.emplace_back(l, e);
-    }
-    std::sort(shorter.begin(), shorter.end());
     Index n = 0;
-    for (const auto& [l, e] : shorter) {
-      const auto [a, b] = e;
+    for (const auto& [a, b] : out_of_bounds(edges(), false)) {
       if (dead_[std::size_t(a)] || dead_[std::size_t(b)] || length(a, b) >= kShortEdge) continue;
       shell(a, b, shell_);
       if (shell_.empty()) continue;
@@ -315,30 +303,13 @@ class TetAdaptation : public detail::AdaptedSimplices<3> {
     const auto vi = std::size_t(v);
     if (dead_[vi]) return false;
     neighbours(v, na_);
-    Vec<3> target = Vec<3>::Zero();
-    for (Index w : na_) {
-      const Vec<3>& q = x_[std::size_t(w)];
-      target += q + (x_[vi] - q) / std::max(length(w, v), 1e-12);
-    }
-    target /= double(na_.size());
-    for (int k = 0; k < 3; ++k) {
-      if (faces_[vi] & (3u << (2 * k))) target[k] = x_[vi][k];
-    }
+    const Vec<3> target = unit_length_target(v, na_);
     if (target == x_[vi]) return false;
     double before = std::numeric_limits<double>::infinity();
     for (Index t : ball_[vi]) before = std::min(before, q_[std::size_t(t)]);
-    for (double step = 1.0; step > 0.1; step *= 0.5) {
-      const Vec<3> p = x_[vi] + step * (target - x_[vi]);
-      double after = std::numeric_limits<double>::infinity();
-      for (Index t : ball_[vi]) after = std::min(after, quality(simplices_[std::size_t(t)], v, p));
-      if (after > before * (1.0 + 1e-3)) {
-        x_[vi] = p;
-        m_[vi] = metric_(p);
-        for (Index t : ball_[vi]) q_[std::size_t(t)] = quality(simplices_[std::size_t(t)]);
-        return true;
-      }
-    }
-    return false;
+    if (!move_towards(v, target, before)) return false;
+    for (Index t : ball_[vi]) q_[std::size_t(t)] = quality(simplices_[std::size_t(t)]);
+    return true;
   }
 
   std::vector<Index> stamp_;  // per vertex: the last vertex + 1 whose edges listed it
