@@ -15,14 +15,7 @@
 namespace lsr {
 namespace {
 
-MetricSizes sizes() {
-  MetricSizes s;
-  s.h_min = 1.0 / 512;
-  s.h_max = 1.0 / 8;
-  s.error = 1e-4;
-  s.growth = 0.5;
-  return s;
-}
+MetricSizes sizes() { return {1.0 / 512, 1.0 / 8, 1e-4, 0.5}; }  // h_min, h_max, error, growth
 
 // What the metric should prescribe at distance d from a circle / sphere of radius R: across,
 // h_min + growth |d|; along, where the level set through the point has curvature 1 / (R + d),

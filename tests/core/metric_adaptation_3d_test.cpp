@@ -125,13 +125,8 @@ TEST(MetricAdaptation3d, AConstantAnisotropicMetricGivesAUnitMesh) {
 // derivatives (the Hessian of the distance is (I - n n^T) / rho).
 constexpr double kRadius = 0.3;
 double sphere_distance(const Vec<3>& x) { return (x - Vec<3>::Constant(0.5)).norm() - kRadius; }
-MetricSizes sphere_sizes() {
-  MetricSizes s;
-  s.h_min = 1.0 / 64;
-  s.h_max = 1.0 / 4;
-  s.error = 0.25 * s.h_min;  // lsrecon's default: a quarter of the size across
-  return s;
-}
+// h_min, h_max, error (lsrecon's default: a quarter of the size across), growth
+MetricSizes sphere_sizes() { return {1.0 / 64, 1.0 / 4, 0.25 / 64, 0.5}; }
 Metric<3> sphere_metric(const Vec<3>& x) {
   const Vec<3> r = x - Vec<3>::Constant(0.5);
   const double rho = std::max(r.norm(), 1e-9);

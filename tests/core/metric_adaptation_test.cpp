@@ -106,14 +106,7 @@ TEST(MetricAdaptation, AConstantAnisotropicMetricGivesAUnitMesh) {
 // metric of its exact derivatives (level_set_metric_test.cpp checks those sizes).
 constexpr double kRadius = 0.3;
 double circle_distance(const Vec<2>& x) { return (x - Vec<2>(0.5, 0.5)).norm() - kRadius; }
-MetricSizes circle_sizes() {
-  MetricSizes s;
-  s.h_min = 1.0 / 1024;
-  s.h_max = 1.0 / 8;
-  s.error = 1e-4;
-  s.growth = 0.5;
-  return s;
-}
+MetricSizes circle_sizes() { return {1.0 / 1024, 1.0 / 8, 1e-4, 0.5}; }  // h_min, h_max, error, growth
 Metric<2> circle_metric(const Vec<2>& x) {
   const Vec<2> r = x - Vec<2>(0.5, 0.5);
   const double rho = std::max(r.norm(), 1e-9);
