@@ -6,10 +6,10 @@
 
 #include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
-#include "fit/surface_refinement.h"
-#include "mesh/data_metric.h"
 #include "fit/mesh_resolution_sample.h"
 #include "fit/sheet_gaps.h"
+#include "fit/surface_refinement.h"
+#include "mesh/data_metric.h"
 #include "sampling/residual_noise.h"
 
 #include <algorithm>
