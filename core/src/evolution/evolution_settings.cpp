@@ -34,18 +34,23 @@ EvolutionSettings resolve_evolution_settings(const ReconstructionOptions& o, con
                             ? o.evolution.renormalization_interval
                             : std::max(1, int(0.4 / (std::abs(step.alpha) * step.time_step) + 1e-9));
   // Tolerances: eps_i at the data, and between samples eps + the largest gap (gap_factor s).
+  // An anisotropic mesh is built to let a P1 level set lie up to its chord error from the
+  // smooth one (anisotropic_error local sizes): a front on the data reads up to that much.
+  const double chord = o.mesh.anisotropic ? o.mesh.anisotropic_error : 0.0;
   s.eps.resize(point_scale.size());
   s.reach.resize(point_scale.size());
   for (std::size_t i = 0; i < s.eps.size(); ++i) {
-    s.eps[i] = o.stopping.tolerance > 0.0 ? o.stopping.tolerance : o.stopping.tolerance_factor * point_scale[i];
-    s.reach[i] = 0.5 * s.eps[i];
+    const double eps = o.stopping.tolerance > 0.0 ? o.stopping.tolerance : o.stopping.tolerance_factor * point_scale[i];
+    s.eps[i] = eps + chord * point_scale[i];
+    s.reach[i] = 0.5 * eps;
   }
   s.median_eps = median(s.eps);
   // Measured against the driving d: over a spanned hole, the distance to the discs.
   const std::size_t nv = std::size_t(scale.size());
   s.front_tolerance.resize(Eigen::Index(nv));
   for (std::size_t v = 0; v < nv; ++v) {
-    s.front_tolerance[v] = (o.stopping.tolerance > 0.0 ? o.stopping.tolerance : o.stopping.tolerance_factor * scale[v]) + o.sampling.gap_factor * scale[v];
+    s.front_tolerance[v] = (o.stopping.tolerance > 0.0 ? o.stopping.tolerance : o.stopping.tolerance_factor * scale[v]) +
+                           (o.sampling.gap_factor + chord) * scale[v];
   }
   // Renormalisation band. From the tagged start the front moves at most |alpha| dt interval d
   // <= 0.4 (gap + 1) l between two renormalisations and the fit reads 3 l: 4 l + gap covers

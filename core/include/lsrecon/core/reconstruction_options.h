@@ -75,9 +75,10 @@ struct MeshOptions {
   double grading = 2.0;
   /// Adapts the mesh to the data's metric (the paper's anisotropic meshes, section 6.2): the
   /// sizes across the data stay the isotropic mesh's, along it they grow where it is flat, to
-  /// sqrt(8 anisotropic_error h / kappa) (h the local size, kappa the curvature). 2D only.
+  /// sqrt(8 anisotropic_error h / kappa) (h the local size, kappa the curvature).
   bool anisotropic = false;
-  /// The chord error allowed along the data, in units of the local mesh size; in (0, 100].
+  /// The chord error allowed along the data, in units of the local mesh size (the stopping
+  /// test allows it as well); in (0, 100].
   double anisotropic_error = 0.25;
 };
 
