@@ -35,6 +35,21 @@ TEST(EvolutionSettings, AutomaticDefaultsFollowAlphaAndTheScales) {
   EXPECT_DOUBLE_EQ(s.schedule.stall.near, std::exp(0.2));
 }
 
+TEST(EvolutionSettings, AnAnisotropicMeshWidensTheToleranceByItsChordError) {
+  ReconstructionOptions o;
+  o.mesh.anisotropic = true;
+  o.mesh.anisotropic_error = 0.25;
+  const Eigen::VectorXd scale = Eigen::VectorXd::Constant(2, 0.01), noise = Eigen::VectorXd::Zero(2);
+  const EvolutionSettings s = resolve_evolution_settings(o, scale, noise, {0.01, 0.02}, 0.01, false);
+  // A P1 front through the data lies up to the chord error (0.25 local sizes) from it: eps +
+  // that at the data and on the front side; the pins' reach stays half of eps.
+  const double f = o.stopping.tolerance_factor;
+  EXPECT_DOUBLE_EQ(s.eps[0], (f + 0.25) * 0.01);
+  EXPECT_DOUBLE_EQ(s.eps[1], (f + 0.25) * 0.02);
+  EXPECT_DOUBLE_EQ(s.reach[1], 0.5 * f * 0.02);
+  EXPECT_DOUBLE_EQ(s.front_tolerance[0], (f + o.sampling.gap_factor + 0.25) * 0.01);
+}
+
 TEST(EvolutionSettings, WhatIsGivenIsKept) {
   ReconstructionOptions o;
   o.start.initial_front = InitialFront::inside;
