@@ -2,15 +2,17 @@
 /// @file lsrecon_snapshot.cpp
 /// @brief Renders meshes (.ply, .vtu) to a PNG, offscreen (run under xvfb-run), one viewport
 /// per input with its name as a label:
-///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --top] [--columns N] [--width W] [--height H]
+///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --slice | --top] [--columns N] [--width W] [--height H]
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
-/// grading of an adaptive mesh); --top looks down the z axis. Flat (2D) data is seen from above.
+/// grading of an adaptive mesh); --slice shows only the section by that plane (the elements'
+/// shapes: those of an anisotropic mesh are long along the surface); --top looks down the z axis. Flat (2D) data is seen from above.
 /// Back faces are blue: a closed surface that shows blue is oriented inwards there.
 #include "command_line.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
+#include <vtkCutter.h>
 #include <vtkDataSet.h>
 #include <vtkCellData.h>
 #include <vtkDataSetMapper.h>
@@ -43,7 +45,7 @@
 namespace {
 
 struct View {
-  bool clip = false, top = false, edges = false;
+  bool clip = false, slice = false, top = false, edges = false;
 };
 
 vtkSmartPointer<vtkDataSet> read(const std::string& path) {
@@ -84,16 +86,24 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   vtkNew<vtkActor> actor;
   const bool flat = b[5] - b[4] <= 1e-12 * std::max(b[1] - b[0], b[3] - b[2]);
   const bool regions = data->GetCellData()->HasArray("region");  // lsrecon --volume-mesh
-  if (v.clip && !flat) {
-    vtkNew<vtkPlane> plane;
-    plane->SetOrigin(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
-    plane->SetNormal(0, -1, 0);
-    vtkNew<vtkExtractGeometry> cut;
-    cut->SetInputData(data);
-    cut->SetImplicitFunction(plane);
-    cut->ExtractInsideOn();
-    cut->ExtractBoundaryCellsOn();
-    mapper->SetInputConnection(cut->GetOutputPort());
+  const bool cut = (v.clip || v.slice) && !flat;
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
+  plane->SetNormal(0, -1, 0);
+  vtkNew<vtkExtractGeometry> clip;
+  vtkNew<vtkCutter> section;
+  if (cut && v.slice) {
+    section->SetInputData(data);
+    section->SetCutFunction(plane);
+    mapper->SetInputConnection(section->GetOutputPort());
+    actor->GetProperty()->SetEdgeVisibility(true);
+    actor->GetProperty()->SetLineWidth(0.5);
+  } else if (cut) {
+    clip->SetInputData(data);
+    clip->SetImplicitFunction(plane);
+    clip->ExtractInsideOn();
+    clip->ExtractBoundaryCellsOn();
+    mapper->SetInputConnection(clip->GetOutputPort());
     actor->GetProperty()->SetEdgeVisibility(true);
     actor->GetProperty()->SetLineWidth(0.5);
   } else {
@@ -132,7 +142,7 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   renderer->AddActor(actor);
   renderer->ResetCamera();
   vtkCamera* camera = renderer->GetActiveCamera();
-  if (v.clip && !flat) {
+  if (cut) {
     camera->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
     camera->SetViewUp(0, 0, 1);
   } else if (!flat && !v.top) {
@@ -168,6 +178,7 @@ int main(int argc, char** argv) {
                                "(without an X display it runs itself under xvfb-run).\n");
   line.group("view")
       .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
+      .flag("slice", v.slice, "show only the section of volume meshes by the plane y = centre, with its edges")
       .flag("top", v.top, "look down the z axis (flat, 2D data always is)")
       .flag("edges", v.edges, "draw the triangles' edges")
       .number("columns", "N", columns, 0, 100, "views per row; 0 = up to 4")
