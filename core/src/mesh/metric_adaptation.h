@@ -49,7 +49,7 @@ double metric_quality(const std::array<Vec<2>, 3>& x, const Metric<2>& m);
 double metric_quality(const std::array<Vec<3>, 4>& x, const Metric<3>& m);
 
 /// @brief Adapts `mesh` (positively oriented, conforming) to `metric` in at most `max_cycles`
-/// rounds, stopping once a round changes fewer than 1% of the vertices. Returns a positively
+/// rounds, stopping once a round changes the vertex count by less than 2%. Returns a positively
 /// oriented mesh whose vertices are new (mesh's positions where kept).
 SimplexMesh<2> adapt_to_metric(const SimplexMesh<2>& mesh, const MetricField<2>& metric, int max_cycles = 12,
                                MetricAdaptationStats* stats = nullptr);

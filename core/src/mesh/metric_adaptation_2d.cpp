@@ -275,12 +275,13 @@ SimplexMesh<2> adapt_to_metric(const SimplexMesh<2>& mesh, const MetricField<2>&
   MetricAdaptationStats s;
   for (; s.cycles < max_cycles;) {
     ++s.cycles;
+    const Index before = work.vertices();
     const Index split = work.split_long_edges(), collapsed = work.collapse_short_edges();
     s.splits += split;
     s.collapses += collapsed;
     s.flips += work.flip_edges();
     s.moves += work.relocate_vertices();
-    if (double(split + collapsed) < 0.01 * double(work.vertices())) break;
+    if (detail::settled(before, work.vertices())) break;
   }
   s.flips += work.flip_edges();
   if (stats) *stats = s;

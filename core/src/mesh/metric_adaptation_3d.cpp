@@ -47,11 +47,6 @@ constexpr double kSplitFloor = 0.05;
 // mesh is better, and trying every face and edge took 2/3 of the time, relocating every vertex
 // a third of the rest (the 20k sphere: the adaptation 1.8 s -> 1.1 s, the same surface).
 constexpr double kImproveBelow = 0.5;
-// Rounds stop once one changes the vertex count by less than this share: past that, each round
-// splits and collapses about as many edges (relocation lengthens a few hundred edges, which
-// the next round splits) and costs as much as the first rounds (measured on the torus at 20k
-// points, before the isotropic band: 5,386 vertices after round 4, 5,269 after round 12).
-constexpr double kSettled = 0.02;
 
 double volume6(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
   return (b - a).dot((c - a).cross(d - a));
@@ -344,7 +339,7 @@ SimplexMesh<3> adapt_to_metric(const SimplexMesh<3>& mesh, const MetricField<3>&
     s.flips += work.swap();
     s.moves += work.relocate_vertices();
     const Index now = work.vertices();
-    if (std::abs(double(now - before)) < kSettled * double(now)) break;
+    if (detail::settled(before, now)) break;
   }
   s.flips += work.swap();
   if (stats) *stats = s;
