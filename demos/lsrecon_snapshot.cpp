@@ -5,7 +5,8 @@
 ///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --slice | --top] [--columns N] [--width W] [--height H]
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
 /// grading of an adaptive mesh); --slice shows only the section by that plane (the elements'
-/// shapes: those of an anisotropic mesh are long along the surface); --top looks down the z axis. Flat (2D) data is seen from above.
+/// shapes: those of an anisotropic mesh are long along the surface); --top looks down the z
+/// axis. Flat (2D) data is seen from above.
 /// Back faces are blue: a closed surface that shows blue is oriented inwards there.
 #include "command_line.h"
 

@@ -84,8 +84,8 @@ class TetAdaptation : public detail::AdaptedSimplices<3> {
   }
 
   // 3-2 swaps on the edges of three tetrahedra, then 2-3 swaps on the faces, of the tetrahedra
-  // worse than kImproveBelow, each where the worse shape improves, until a sweep swaps less than 1% of the tetrahedra (each swap raises
-  // the worse shape of its group, so it ends).
+  // worse than kImproveBelow, each where the worse shape improves, until a sweep swaps less
+  // than 1% of the tetrahedra (each swap raises the worse shape of its group, so it ends).
   Index swap() {
     Index n = 0;
     for (int sweep = 0; sweep < 8; ++sweep) {
