@@ -118,6 +118,9 @@ Cli parse(int argc, char** argv) {
       .number("smooth", "N", c.smooth, 0, 1000, "N rounds of Laplace smoothing of the 3D result");
   line.group("resources")
       .number("threads", "N", s.limits.threads, 0, 1024, "0 = all cores")
+      .number("tiles", "N", s.limits.tiles, 0, 1e6,
+              "split the sampling of the points into N tiles (runs along a Z-order curve, one after another; "
+              "lsrecon-mpi shares them among its ranks): less memory at once, the same result; 0 = one")
       .number("max-memory", "GIB", s.limits.max_memory / double(1 << 30), 0, 1e5, false,
               "refuse clouds and meshes predicted to need more; 0 = half the machine's memory",
               [&](double gib) { s.limits.max_memory = gib * double(1 << 30); })

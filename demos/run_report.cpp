@@ -39,6 +39,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"max_memory_bytes", o.limits.max_memory},
                         {"max_mesh_vertices", o.limits.max_vertices},
                         {"threads", o.limits.threads},
+                        {"tiles", o.limits.tiles},
                         {"two_sided", o.evolution.two_sided},
                         {"levels", c.levels},
                         {"init_mesh", c.init_mesh},
@@ -53,6 +54,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
   }
   const char* status = r.status == lsr::ReconstructionStatus::converged       ? "converged"
                        : r.status == lsr::ReconstructionStatus::not_converged ? "not_converged"
+                       : r.status == lsr::ReconstructionStatus::shared        ? "shared"
                                                                               : "cancelled";
   json report = {{"lsrecon_version", LSRECON_VERSION},
                  {"input", c.demo.empty() ? c.input : "demo:" + c.demo},

@@ -65,20 +65,25 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const HeightFieldsAt fields = !anisotropic                       ? spanning
                                 : spanning == HeightFieldsAt::rims ? HeightFieldsAt::all_and_rims
                                                                    : HeightFieldsAt::all;
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
+  const SamplingTiles tiles{o.limits.tiles, o.limits.exchange.get()};
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
     require_spanning(in.points);
     box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(in.points));
-    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress);
+    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles);
   }
   const double spacing = median(sampling.spacing);
   r.noise = median(sampling.noise) / box.scale();
   r.spacing = spacing / box.scale();
   std::vector<double> point_scale = local_scales(sampling);
   clock.end("sampling");
+  if (tiles.exchange && tiles.exchange->worker() != 0) {
+    r.status = ReconstructionStatus::shared;  // worker 0 carries on alone
+    return r;
+  }
 
   // 3. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
   AdaptiveMesh<D> adaptive;

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file local_sampling_test.cpp
-/// @brief The spacing rule on regular and random samples, the noise and normal estimates.
+/// @brief The spacing rule on regular and random samples, the noise and normal estimates; tiles
+/// and workers give every point the same estimate.
 #include "lsrecon/testdata/shape_corpus.h"
 #include "sampling/local_sampling.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <mutex>
 #include <random>
+#include <thread>
 
 namespace lsr {
 namespace {
@@ -122,6 +127,110 @@ TEST(LocalSampling, CurvatureOfRandomSphereSamplesConvergesLikeTheSquaredNeighbo
       EXPECT_LT(median(error), 0.5 * previous);  // n x10: r^2 / 10
     }
     previous = median(error);
+  }
+}
+
+// Workers as threads of one process, sharing through memory: the protocol lsrecon-mpi runs over
+// MPI (every worker calls share in the same order, with its own copy of the values).
+class ThreadExchange : public TileExchange {
+ public:
+  struct Meeting {
+    explicit Meeting(int n) : workers(n), published(std::size_t(n), nullptr) {}
+    void wait() {
+      std::unique_lock<std::mutex> lock(mutex);
+      const long round = rounds;
+      if (++arrived == workers) {
+        arrived = 0;
+        ++rounds;
+        all.notify_all();
+      } else {
+        all.wait(lock, [&] { return rounds != round; });
+      }
+    }
+    const int workers;
+    std::vector<void*> published;
+    std::mutex mutex;
+    std::condition_variable all;
+    int arrived = 0;
+    long rounds = 0;
+  };
+  ThreadExchange(int worker, Meeting& meeting) : worker_(worker), meeting_(meeting) {}
+  int worker() const override { return worker_; }
+  int workers() const override { return meeting_.workers; }
+  void share(void* values, std::size_t bytes, const std::vector<std::size_t>& begin) const override {
+    meeting_.published[std::size_t(worker_)] = values;
+    meeting_.wait();
+    for (int w = 0; w < workers(); ++w) {
+      if (w == worker_) continue;
+      const std::size_t from = begin[std::size_t(w)] * bytes, size = (begin[std::size_t(w) + 1] - begin[std::size_t(w)]) * bytes;
+      std::memcpy(static_cast<char*>(values) + from, static_cast<const char*>(meeting_.published[std::size_t(w)]) + from, size);
+    }
+    meeting_.wait();  // nobody changes its values before all have copied them
+  }
+
+ private:
+  int worker_;
+  Meeting& meeting_;
+};
+
+template <class T, class A>
+bool same_bytes(const std::vector<T, A>& a, const std::vector<T, A>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+void expect_same(const LocalSampling<3>& a, const LocalSampling<3>& b, const std::string& what) {
+  EXPECT_TRUE(same_bytes(a.spacing, b.spacing)) << what;
+  EXPECT_TRUE(same_bytes(a.noise, b.noise)) << what;
+  EXPECT_TRUE(same_bytes(a.normals, b.normals)) << what;
+  EXPECT_TRUE(same_bytes(a.gap, b.gap)) << what;
+  EXPECT_TRUE(same_bytes(a.rim, b.rim)) << what;
+  EXPECT_TRUE(same_bytes(a.height_fields, b.height_fields)) << what;
+}
+
+// Every point's estimate is computed from its own neighbours in the whole index, whichever
+// tile or worker computes it; the cloud-wide decisions (scan lines or not, the rims'
+// smoothness) are taken on the shared values. So tiles and workers change no bit. The clouds
+// take every path: noisy and clean scan lines (read as such by disagreement and by elongation),
+// with a hole cut out and open borders (rims, height fields at them), and i.i.d. samples.
+TEST(LocalSampling, TilesAndWorkersGiveEveryPointTheSameEstimate) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<std::pair<std::string, Points<3>>> clouds(3);
+  for (const double sigma : {6e-3, 0.0}) {
+    Points<3>& lines = clouds[sigma > 0.0 ? 0 : 1].second;
+    clouds[sigma > 0.0 ? 0 : 1].first = sigma > 0.0 ? "noisy scan lines" : "scan lines";
+    const double a = 0.001;
+    for (int j = 0; j < 30; ++j) {
+      for (int i = 0; i < 300; ++i) {
+        const Vec<3> x(0.3 + a * i, 0.3 + 10 * a * j, 0.5 + sigma * a * 1e3 * noise(rng));
+        if ((x.head<2>() - Vec<3>(0.45, 0.45, 0).head<2>()).norm() > 0.05) lines.push_back(x);
+      }
+    }
+  }
+  // A torus opened where x is within a tenth of the diameter of its largest.
+  double largest = -1e300, smallest = 1e300;
+  const Points<3> torus = sample_test_shape(make_test_shape("torus"), 6000).points;
+  for (const Vec<3>& x : torus) largest = std::max(largest, x.x()), smallest = std::min(smallest, x.x());
+  clouds[2].first = "random, open";
+  for (const Vec<3>& x : torus) {
+    if (x.x() < largest - 0.1 * (largest - smallest)) clouds[2].second.push_back(x);
+  }
+  for (const auto& [what, cloud] : clouds) {
+    const NearestPointIndex<3> data(cloud);
+    const LocalSampling<3> one = estimate_local_sampling(data, 2, HeightFieldsAt::all_and_rims);
+    ASSERT_NE(std::count(one.rim.begin(), one.rim.end(), 1), 0) << what;  // the rims' path is taken
+    expect_same(one, estimate_local_sampling(data, 2, HeightFieldsAt::all_and_rims, Progress(), {7, nullptr}), what + ", 7 tiles");
+    ThreadExchange::Meeting meeting(3);
+    std::vector<LocalSampling<3>> each(3);
+    std::vector<std::thread> workers;
+    for (int w = 0; w < 3; ++w) {
+      workers.emplace_back([&, w] {
+        const ThreadExchange exchange(w, meeting);
+        each[std::size_t(w)] = estimate_local_sampling(data, 1, HeightFieldsAt::all_and_rims, Progress(), {5, &exchange});
+      });
+    }
+    for (auto& t : workers) t.join();
+    for (int w = 0; w < 3; ++w) expect_same(one, each[std::size_t(w)], what + ", worker " + std::to_string(w) + " of 3");
   }
 }
 

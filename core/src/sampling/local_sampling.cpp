@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include <omp.h>
 
@@ -163,6 +164,49 @@ double rim_smoothness(const LocalSampling<D>& sampling) {
   return LocalSampling<D>::kRimSmoothness - 0.6 * median(std::move(ratio2));
 }
 
+// The tiles of n points among the workers (tile_exchange.h): worker w owns the points
+// [begin[w], begin[w + 1]), this worker's tiles are [cuts[j], cuts[j + 1]).
+struct TileRuns {
+  std::vector<std::size_t> begin;
+  std::vector<std::size_t> cuts;
+  const TileExchange* exchange = nullptr;
+
+  TileRuns(std::size_t n, const SamplingTiles& t) : exchange(t.exchange) {
+    const std::size_t workers = exchange ? std::size_t(exchange->workers()) : 1;
+    const std::size_t w = exchange ? std::size_t(exchange->worker()) : 0;
+    const std::size_t tiles = std::max({std::size_t(std::max(t.tiles, 1)), workers});
+    const auto tile_begin = [&](std::size_t j) { return j * n / tiles; };
+    for (std::size_t v = 0; v <= workers; ++v) begin.push_back(tile_begin(v * tiles / workers));
+    for (std::size_t j = w * tiles / workers; j <= (w + 1) * tiles / workers; ++j) cuts.push_back(tile_begin(j));
+  }
+  std::size_t first() const { return cuts.front(); }
+  std::size_t end() const { return cuts.back(); }
+  std::size_t workers() const { return begin.size() - 1; }
+  // Every worker's points' values (plain data) to every worker.
+  template <class T, class A>
+  void share(std::vector<T, A>& values) const {
+    if (workers() > 1) exchange->share(values.data(), sizeof(T), begin);
+  }
+  // The sum of every worker's value.
+  long sum(long mine) const {
+    if (workers() == 1) return mine;
+    std::vector<long> each(workers(), 0);
+    std::vector<std::size_t> slot(workers() + 1);
+    for (std::size_t v = 0; v < slot.size(); ++v) slot[v] = v;
+    each[std::size_t(exchange->worker())] = mine;
+    exchange->share(each.data(), sizeof(long), slot);
+    return std::accumulate(each.begin(), each.end(), 0L);
+  }
+};
+
+// The points [first, end) as queries: p itself when that is all of them.
+template <int D>
+const Points<D>& run_of(const Points<D>& p, std::size_t first, std::size_t end, Points<D>& copy) {
+  if (first == 0 && end == p.size()) return p;
+  copy.assign(p.begin() + long(first), p.begin() + long(end));
+  return copy;
+}
+
 // Of the open points (kRimGap free among their k nearest: a superset, as fewer neighbours
 // leave wider gaps), those whose kRimNeighbours nearest also leave kRimGap free, whose
 // neighbours' normals agree, and which have D - 1 more such points among their k nearest.
@@ -176,68 +220,70 @@ double rim_smoothness(const LocalSampling<D>& sampling) {
 template <int D>
 std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::vector<char>& open,
                                  const LocalSampling<D>& sampling, const LargeVector<Index>& neighbours, int k,
-                                 int threads) {
+                                 int threads, const TileRuns& tiles) {
   const Points<D>& p = data.points();
   const Points<D>& normals = sampling.normals;
   std::vector<char> wide(p.size(), 0);
-  Points<D> candidates;
-  std::vector<std::size_t> which;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!open[i]) continue;
-    candidates.push_back(p[i]);
-    which.push_back(i);
-  }
   constexpr int kw = LocalSampling<D>::kRimNeighbours;
-  LargeVector<Index> nearest;
-  data.query_k(candidates, kw, nearest, threads);
-  const long n = long(which.size());
-  // The open side must be empty beyond the neighbourhood too: a point one neighbourhood radius
-  // r into it, along the middle of the gap, at least r / 2 from the data (about r inside a hole
-  // of radius >= r; a wide gap among random samples closes within about a spacing).
-  Points<D> inside(which.size());
-  std::vector<double> radius(which.size(), 0.0), bound(which.size()), empty;
-  std::vector<Index> found;
+  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
+    Points<D> candidates;
+    std::vector<std::size_t> which;
+    for (std::size_t i = tiles.cuts[tile]; i < tiles.cuts[tile + 1]; ++i) {
+      if (!open[i]) continue;
+      candidates.push_back(p[i]);
+      which.push_back(i);
+    }
+    LargeVector<Index> nearest;
+    data.query_k(candidates, kw, nearest, threads);
+    const long n = long(which.size());
+    // The open side must be empty beyond the neighbourhood too: a point one neighbourhood radius
+    // r into it, along the middle of the gap, at least r / 2 from the data (about r inside a hole
+    // of radius >= r; a wide gap among random samples closes within about a spacing).
+    Points<D> inside(which.size());
+    std::vector<double> radius(which.size(), 0.0), bound(which.size()), empty;
+    std::vector<Index> found;
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (long c = 0; c < n; ++c) {
-    const std::size_t i = which[std::size_t(c)];
-    const Index* near = &nearest[std::size_t(c) * kw];
-    Vec<D> middle = Vec<D>::Zero();
-    wide[i] = largest_angular_gap(p, near, kw, i, normals[i], &middle) > LocalSampling<D>::kRimGap;
-    radius[c] = (p[near[kw - 1]] - p[i]).norm();
-    inside[c] = p[i] + radius[c] * middle;
-    bound[c] = 0.5 * radius[c];
+    for (long c = 0; c < n; ++c) {
+      const std::size_t i = which[std::size_t(c)];
+      const Index* near = &nearest[std::size_t(c) * kw];
+      Vec<D> middle = Vec<D>::Zero();
+      wide[i] = largest_angular_gap(p, near, kw, i, normals[i], &middle) > LocalSampling<D>::kRimGap;
+      radius[c] = (p[near[kw - 1]] - p[i]).norm();
+      inside[c] = p[i] + radius[c] * middle;
+      bound[c] = 0.5 * radius[c];
+    }
+    data.query_within(inside, bound, empty, found, threads);
+    for (long c = 0; c < n; ++c) {
+      if (found[std::size_t(c)] >= 0) wide[which[std::size_t(c)]] = 0;
+    }
   }
-  data.query_within(inside, bound, empty, found, threads);
-  for (long c = 0; c < n; ++c) {
-    if (found[std::size_t(c)] >= 0) wide[which[std::size_t(c)]] = 0;
-  }
+  tiles.share(wide);
   std::vector<char> rim(p.size(), 0);
   const double smoothness = rim_smoothness(sampling);
-  for (std::size_t i : which) {
-    if (!wide[i] || mean_agreement(normals, &neighbours[i * std::size_t(k)], k, i) < smoothness) continue;
+  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
+    const Index* around = &neighbours[(i - tiles.first()) * std::size_t(k)];
+    if (!wide[i] || mean_agreement(normals, around, k, i) < smoothness) continue;
     int others = 0;
-    for (int j = 0; j < k; ++j) {
-      const Index other = neighbours[i * std::size_t(k) + std::size_t(j)];
-      others += std::size_t(other) != i && wide[std::size_t(other)];
-    }
+    for (int j = 0; j < k; ++j) others += std::size_t(around[j]) != i && wide[std::size_t(around[j])];
     rim[i] = others >= D - 1;
   }
+  tiles.share(rim);
   return rim;
 }
 
-// Median of raw over each point's neighbourhood.
-std::vector<double> neighbourhood_median(const std::vector<double>& raw, const LargeVector<Index>& nearest, int k,
-                                         int threads) {
-  std::vector<double> out(raw.size());
-  const long n = long(raw.size());
+// Median of raw over the neighbourhood of each of this worker's points (out[first + r] for the
+// r-th).
+void neighbourhood_median(const std::vector<double>& raw, const LargeVector<Index>& nearest, int k, std::size_t first,
+                          std::vector<double>& out, int threads) {
+  out.resize(raw.size());
+  const long n = long(nearest.size() / std::size_t(k));
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (long i = 0; i < n; ++i) {
+  for (long r = 0; r < n; ++r) {
     double v[32];
-    for (int j = 0; j < k; ++j) v[j] = raw[nearest[std::size_t(i) * k + j]];
+    for (int j = 0; j < k; ++j) v[j] = raw[std::size_t(nearest[std::size_t(r) * k + j])];
     std::nth_element(v, v + k / 2, v + k);
-    out[i] = v[k / 2];
+    out[first + std::size_t(r)] = v[k / 2];
   }
-  return out;
 }
 
 // Scan lines: the k nearest of a point lie along its own line, 3-10 times nearer than the
@@ -260,12 +306,16 @@ std::vector<double> neighbourhood_median(const std::vector<double>& raw, const L
 // 0.01 on i.i.d. samples (clean or noisy, sphere and bunny) and on CGAL's raw scans (measured);
 // above kScanLineDisagreement the cloud is read as scan lines too. Checked on every 8th point.
 template <int D>
-bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& s, int threads) {
+bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& s, int threads, const TileRuns& tiles) {
   constexpr int wide = LocalSampling<D>::kHoleNeighbours;
   constexpr std::size_t kStride = 8;
   const Points<D>& p = data.points();
   Points<D> probes;
-  for (std::size_t i = 0; i < p.size(); i += kStride) probes.push_back(p[i]);
+  std::vector<std::size_t> which;
+  for (std::size_t i = (tiles.first() + kStride - 1) / kStride * kStride; i < tiles.end(); i += kStride) {
+    probes.push_back(p[i]);
+    which.push_back(i);
+  }
   LargeVector<Index> nearest;
   data.query_k(probes, wide, nearest, threads);
   const long n = long(probes.size());
@@ -275,33 +325,46 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
     double thickness = 0.0;
     Vec<D> normal;
     pca(p, &nearest[std::size_t(j) * wide], wide, thickness, normal);
-    if (std::abs(normal.dot(s.normals[std::size_t(j) * kStride])) < std::sqrt(0.5)) ++disagree;
+    if (std::abs(normal.dot(s.normals[which[std::size_t(j)]])) < std::sqrt(0.5)) ++disagree;
   }
-  return double(disagree) > LocalSampling<D>::kScanLineDisagreement * double(n);
+  const std::size_t probed = (p.size() + kStride - 1) / kStride;
+  return double(tiles.sum(disagree)) > LocalSampling<D>::kScanLineDisagreement * double(probed);
 }
 
 template <int D>
 void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Index>& neighbours, int k, int threads,
-                         const std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress) {
+                         std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress,
+                         const TileRuns& tiles) {
   constexpr int wide = LocalSampling<D>::kHoleNeighbours;
   const Points<D>& p = data.points();
   if (p.size() < std::size_t(wide)) return;
-  if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads)) return;
-  progress.update("sampling", -1.0);
-  LargeVector<Index> nearest;
-  data.query_k(p, wide, nearest, threads);
-  progress.update("sampling", -1.0);
+  tiles.share(elongation);
+  if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
   std::vector<double> hole(p.size()), noise(p.size());
-  const long n = long(p.size());
+  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
+    progress.update("sampling", -1.0);
+    const std::size_t first = tiles.cuts[tile];
+    Points<D> copy;
+    LargeVector<Index> nearest;
+    data.query_k(run_of(p, first, tiles.cuts[tile + 1], copy), wide, nearest, threads);
+    const long n = long(tiles.cuts[tile + 1] - first);
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (long i = 0; i < n; ++i) {
-    const Index* around = &nearest[std::size_t(i) * wide];
-    pca(p, around, wide, noise[i], s.normals[i]);
-    hole[i] = empty_disc_radius(p, around, wide, std::size_t(i), s.normals[i]);
+    for (long r = 0; r < n; ++r) {
+      const std::size_t i = first + std::size_t(r);
+      const Index* around = &nearest[std::size_t(r) * wide];
+      pca(p, around, wide, noise[i], s.normals[i]);
+      hole[i] = empty_disc_radius(p, around, wide, i, s.normals[i]);
+    }
   }
-  s.noise = neighbourhood_median(noise, neighbours, k, threads);
-  hole = neighbourhood_median(hole, neighbours, k, threads);
-  for (std::size_t i = 0; i < p.size(); ++i) s.spacing[i] = std::max(s.spacing[i], hole[i] / LocalSampling<D>::kHoleToSpacing);
+  progress.update("sampling", -1.0);
+  tiles.share(noise);
+  tiles.share(hole);
+  neighbourhood_median(noise, neighbours, k, tiles.first(), s.noise, threads);
+  std::vector<double> filtered;
+  neighbourhood_median(hole, neighbours, k, tiles.first(), filtered, threads);
+  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
+    s.spacing[i] = std::max(s.spacing[i], filtered[i] / LocalSampling<D>::kHoleToSpacing);
+  }
 }
 
 }  // namespace
@@ -372,15 +435,20 @@ double median(std::vector<double> values) {
 
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, HeightFieldsAt height_fields,
-                                         const Progress& progress) {
+                                         const Progress& progress, const SamplingTiles& tiling) {
   constexpr int k = LocalSampling<D>::kNeighbours;
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
+  const TileRuns tiles(p.size(), tiling);
+  const std::size_t first = tiles.first();
   LocalSampling<D> s;
-  LargeVector<Index> neighbours;
-  data.query_k(p, k, neighbours, t);
+  LargeVector<Index> neighbours;  // of this worker's points, k each
+  {
+    Points<D> copy;
+    data.query_k(run_of(p, first, tiles.end(), copy), k, neighbours, t);
+  }
   progress.update("sampling", -1.0);
-  const long n = long(p.size());
+  const long n = long(tiles.end() - first);
   std::vector<double> spacing(p.size()), noise(p.size()), elongation(p.size());
   const bool rims = height_fields == HeightFieldsAt::rims || height_fields == HeightFieldsAt::all_and_rims;
   const bool all = height_fields == HeightFieldsAt::all || height_fields == HeightFieldsAt::all_and_rims;
@@ -388,33 +456,40 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   s.normals.resize(p.size());
   s.gap.resize(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
-  for (long i = 0; i < n; ++i) {
-    const Index* nearest = &neighbours[std::size_t(i) * k];
-    spacing[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), LocalSampling<D>::kSpacingRank);
-    s.gap[i] = kth_distinct_distance(p, nearest, k, std::size_t(i), 1);
-    pca(p, nearest, k, noise[i], s.normals[i], &elongation[std::size_t(i)]);
-    if (rims) open[i] = largest_angular_gap(p, nearest, k, std::size_t(i), s.normals[i]) > LocalSampling<D>::kRimGap;
+  for (long r = 0; r < n; ++r) {
+    const std::size_t i = first + std::size_t(r);
+    const Index* nearest = &neighbours[std::size_t(r) * k];
+    spacing[i] = kth_distinct_distance(p, nearest, k, i, LocalSampling<D>::kSpacingRank);
+    s.gap[i] = kth_distinct_distance(p, nearest, k, i, 1);
+    pca(p, nearest, k, noise[i], s.normals[i], &elongation[i]);
+    if (rims) open[i] = largest_angular_gap(p, nearest, k, i, s.normals[i]) > LocalSampling<D>::kRimGap;
   }
-  s.spacing = neighbourhood_median(spacing, neighbours, k, t);
-  s.noise = neighbourhood_median(noise, neighbours, k, t);
+  tiles.share(spacing);
+  tiles.share(noise);
+  neighbourhood_median(spacing, neighbours, k, first, s.spacing, t);
+  neighbourhood_median(noise, neighbours, k, first, s.noise, t);
   progress.update("sampling", -1.0);
-  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress);
-  if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t);
+  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress, tiles);
+  tiles.share(s.spacing);
+  tiles.share(s.noise);
+  tiles.share(s.normals);
+  tiles.share(s.gap);
+  if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t, tiles);
   progress.update("sampling", -1.0);
   // 48 bytes a point in 3D: not even allocated for a closed cloud without rims.
   if (all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
     s.height_fields.resize(p.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(t)
-    for (long i = 0; i < n; ++i) {
-      if (all || s.rim[std::size_t(i)]) {
-        s.height_fields[i] = fit_height_field(p, &neighbours[std::size_t(i) * k], k, std::size_t(i), s.normals[i]);
-      }
+    for (long r = 0; r < n; ++r) {
+      const std::size_t i = first + std::size_t(r);
+      if (all || s.rim[i]) s.height_fields[i] = fit_height_field(p, &neighbours[std::size_t(r) * k], k, i, s.normals[i]);
     }
+    tiles.share(s.height_fields);
   }
   return s;
 }
 
-template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&);
-template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&);
+template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&);
+template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&);
 
 }  // namespace lsr

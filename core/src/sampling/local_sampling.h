@@ -17,6 +17,7 @@
 
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/progress.h"
+#include "lsrecon/core/tile_exchange.h"
 
 #include <array>
 #include <vector>
@@ -87,8 +88,15 @@ enum class HeightFieldsAt {
   all_and_rims    ///< at every point, and the rims found
 };
 
+/// @brief Which points this worker estimates, and how it shares them (tile_exchange.h).
+struct SamplingTiles {
+  int tiles = 1;                           ///< runs along the points' order; at least one per worker
+  const TileExchange* exchange = nullptr;  ///< null: this process alone
+};
+
 /// @brief Estimates the sampling scales of every point of the index. Exact duplicates are skipped
-/// when ranking neighbours. Deterministic for any thread count.
+/// when ranking neighbours. Deterministic for any thread count, tiling and number of workers:
+/// each worker computes its own tiles' points and shares them, so all end with every point's.
 /// @param threads 0 for all cores
 /// @param height_fields where to fit height_fields (only spanning holes needs them; at every
 /// point they took 0.24 s of the 0.54 s of the sampling stage on a 200k-point torus)
@@ -97,7 +105,7 @@ enum class HeightFieldsAt {
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads = 0,
                                          HeightFieldsAt height_fields = HeightFieldsAt::none,
-                                         const Progress& progress = Progress());
+                                         const Progress& progress = Progress(), const SamplingTiles& tiles = {});
 
 /// @brief The median of values (copied; empty gives 0).
 double median(std::vector<double> values);

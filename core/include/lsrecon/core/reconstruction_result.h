@@ -18,6 +18,7 @@ enum class ReconstructionStatus {
   converged,      ///< data and front within tolerance (up to StoppingOptions::unreached_fraction of stalled points)
   not_converged,  ///< stopped by patience or max_iterations; the best iterate is returned
   cancelled,      ///< the progress callback asked to stop; the best iterate so far, if any
+  shared,         ///< a worker other than 0 of LimitOptions::exchange: its tiles done, no surface
 };
 
 /// @brief What came out, and how.
