@@ -7,6 +7,9 @@
 #include "geometry/facet_mesh_distance.h"
 #include "lsrecon/adapters/curve_files.h"
 #include "lsrecon/adapters/image_points.h"
+#ifdef LSRECON_MPI
+#include "lsrecon/adapters/mpi_tile_exchange.h"
+#endif
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/adapters/statistical_outliers.h"
@@ -33,6 +36,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -207,21 +211,13 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
   return 0;
 }
 
-int run(const Cli& c) {
-  // Before any work: an output that cannot be written would be lost at the end of the run.
-  OutputFiles files{lsr::demos::StagedOutputs(c.input), {}, {}, {}, {}};
-  for (int k = 0; k < c.levels; ++k) files.levels.push_back(files.staged.stage(c.levels > 1 ? level_path(c.output, k) : c.output));
-  if (!c.report.empty()) files.report = files.staged.stage(c.report);
-  if (!c.save_points.empty()) files.save_points = files.staged.stage(c.save_points);
-  if (!c.volume_mesh.empty()) files.volume_mesh = files.staged.stage(c.volume_mesh);
-  if (!c.init_mesh.empty() && !std::filesystem::exists(c.init_mesh)) {
-    throw lsr::Error("the start mesh " + c.init_mesh + " does not exist", "check the --init-mesh path");
-  }
-  lsr::demos::Stopwatch total;
+// The points as the solver gets them: read (or generated), their dimension settled, the
+// statistical outliers left out. With files, the points are also saved if asked.
+Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
   lsr::demos::Stopwatch clock;
   Input in = c.demo.empty() ? read_input(c) : generate(c);
-  if (!c.save_points.empty()) lsr::adapters::write_points(files.save_points, in.points);
-  const double read_seconds = clock.lap();
+  if (files && !c.save_points.empty()) lsr::adapters::write_points(files->save_points, in.points);
+  read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);
   // Three distinct points or fewer are flat whatever they sample: the output decides, the
@@ -243,18 +239,58 @@ int run(const Cli& c) {
     const std::vector<std::size_t> kept = lsr::adapters::statistical_inliers(in.points, c.statistical);
     in.statistical_outliers = in.points.size() - kept.size();
     lsr::adapters::keep_only(in.points, kept);
-    std::fprintf(stderr, "lsrecon: pcl::StatisticalOutlierRemoval (k = %d, %g deviations) left out %zu point(s), %.2f s\n",
-                 c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
+    if (files) {
+      std::fprintf(stderr, "lsrecon: pcl::StatisticalOutlierRemoval (k = %d, %g deviations) left out %zu point(s), %.2f s\n",
+                   c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
+    }
   }
+  return in;
+}
+
+lsr::Points<2> planar(const Input& in) {
+  lsr::Points<2> xy;
+  for (const auto& p : in.points) xy.emplace_back(p.x(), p.y());
+  return xy;
+}
+
+#ifdef LSRECON_MPI
+// A rank other than 0 of lsrecon-mpi: the same points and options, its share of the sampling's
+// tiles (lsrecon/core/tile_exchange.h), nothing written.
+int share_tiles(const Cli& c) {
+  double read_seconds = 0.0;
+  const Input in = prepared_input(c, nullptr, read_seconds);
+  const lsr::ReconstructionStatus status = in.dim == 2 ? solve<2>(c, planar(in)).status : solve<3>(c, in.points).status;
+  if (status == lsr::ReconstructionStatus::cancelled) return 130;
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::fprintf(stderr, "lsrecon-mpi: rank %d of %d shared its tiles, peak memory %.0f MiB\n",
+               c.solver.limits.exchange->worker(), c.solver.limits.exchange->workers(), double(usage.ru_maxrss) / 1024.0);
+  return 0;
+}
+#endif
+
+int run(const Cli& c) {
+  // Before any work: an output that cannot be written would be lost at the end of the run.
+  OutputFiles files{lsr::demos::StagedOutputs(c.input), {}, {}, {}, {}};
+  for (int k = 0; k < c.levels; ++k) files.levels.push_back(files.staged.stage(c.levels > 1 ? level_path(c.output, k) : c.output));
+  if (!c.report.empty()) files.report = files.staged.stage(c.report);
+  if (!c.save_points.empty()) files.save_points = files.staged.stage(c.save_points);
+  if (!c.volume_mesh.empty()) files.volume_mesh = files.staged.stage(c.volume_mesh);
+  if (!c.init_mesh.empty() && !std::filesystem::exists(c.init_mesh)) {
+    throw lsr::Error("the start mesh " + c.init_mesh + " does not exist", "check the --init-mesh path");
+  }
+  lsr::demos::Stopwatch total;
+  double read_seconds = 0.0;
+  const Input in = prepared_input(c, &files, read_seconds);
   const OuterStages stages = {{"read", read_seconds}};
+  const std::string out_ext = lsr::adapters::file_extension(c.output);
   if (in.dim == 2) {
-    lsr::Points<2> planar;
-    for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
+    const lsr::Points<2> xy = planar(in);
     auto write = [&](const lsr::ReconstructionResult<2>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                      OuterStages& times) {
       if (out_ext == "svg") {
         const lsr::adapters::Curves start = c.init_mesh.empty() ? lsr::adapters::Curves{} : lsr::adapters::read_polylines(c.init_mesh);
-        lsr::adapters::write_svg(output, r.surface.vertices, r.loops, planar, c.init_mesh.empty() ? nullptr : &start);
+        lsr::adapters::write_svg(output, r.surface.vertices, r.loops, xy, c.init_mesh.empty() ? nullptr : &start);
       } else {
         lsr::adapters::write_polylines(output, r.surface.vertices, r.loops);
       }
@@ -264,7 +300,7 @@ int run(const Cli& c) {
                          " vertices",
                      {}};
     };
-    return solve_and_write<2>(c, in, planar, stages, total, files, write);
+    return solve_and_write<2>(c, in, xy, stages, total, files, write);
   }
   auto write = [&](const lsr::ReconstructionResult<3>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                    OuterStages& times) {
@@ -286,6 +322,37 @@ int run(const Cli& c) {
 
 }  // namespace
 
+#ifdef LSRECON_MPI
+// lsrecon-mpi: every rank parses the same command line and reads the same input (from shared
+// storage); rank 0 runs lsrecon, the others share the sampling's tiles with it and stop. A rank
+// that fails aborts them all, as the others would wait for it.
+int main(int argc, char** argv) {
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);  // OpenMP threads make no MPI calls
+  Cli c = parse(argc, argv);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) std::signal(signal_number, on_interrupt);
+  int status = 1;
+  int rank = 0;
+  try {
+    const auto exchange = std::make_shared<const lsr::adapters::MpiTileExchange>();
+    rank = exchange->worker();
+    if (c.levels > 1) {
+      throw lsr::InvalidInput("--levels runs several reconstructions, which lsrecon-mpi does not share yet", "run lsrecon for levels");
+    }
+    c.solver.limits.exchange = exchange;
+    if (rank != 0) c.quiet = true;
+    status = rank == 0 ? run(c) : share_tiles(c);
+    if (status == 130) std::fprintf(stderr, "\nlsrecon-mpi: rank %d interrupted; nothing was written\n", rank);
+  } catch (const std::exception& e) {
+    const std::string message = lsr::demos::StagedOutputs::in_destination_terms(e.what());
+    std::cerr << (c.quiet ? "" : "\n") << "lsrecon-mpi: rank " << rank << ": " << message << '\n';
+    status = 1;
+  }
+  if (status != 0) MPI_Abort(MPI_COMM_WORLD, status);
+  MPI_Finalize();
+  return 0;
+}
+#else
 int main(int argc, char** argv) {
   const Cli c = parse(argc, argv);
   // Each ends the run as Ctrl-C does: nothing written. SIGXFSZ (a file size limit) would
@@ -301,3 +368,4 @@ int main(int argc, char** argv) {
     return 1;
   }
 }
+#endif

@@ -43,9 +43,11 @@ class Cli : public ::testing::Test {
 
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-  CliRun run(const std::string& args) const {
+  CliRun run(const std::string& args) const { return run_program(LSRECON_CLI, args); }
+
+  CliRun run_program(const std::string& program, const std::string& args) const {
     const std::string log = path("log.txt");
-    const std::string command = std::string(LSRECON_CLI) + " " + args + " > " + log + " 2>&1";
+    const std::string command = program + " " + args + " > " + log + " 2>&1";
     CliRun r;
     const int raw = std::system(command.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file lsrecon_mpi_test.cpp
+/// @brief lsrecon-mpi under mpirun -np 2 on one machine: the ranks share the sampling's tiles and
+/// rank 0 writes what lsrecon --tiles 2 writes in one process, byte for byte; a rank that fails
+/// stops them all and nothing is written.
+#include "cli_fixture.h"
+#include "lsrecon/adapters/point_files.h"
+#include "lsrecon/testdata/simulated_scan.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace {
+
+using lsr_test::Cli;
+using lsr_test::CliRun;
+using lsr_test::expect_closed_mesh;
+
+// Open MPI refuses root unless told; --bind-to none leaves each rank's OpenMP threads free.
+const std::string kMpiRun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " LSRECON_MPIEXEC
+                            " -np 2 --oversubscribe --bind-to none " LSRECON_MPI_CLI;
+
+// A line scan from above of the double torus: scan lines (their wide neighbourhoods and empty
+// discs), an unseen underside (rims), genus 2. Every path of the sampling is shared.
+TEST_F(Cli, MpiRanksShareTheTilesAndRankZeroWritesWhatOneProcessWrites) {
+  lsr::ScannerSettings scanner;
+  scanner.from_above = true;
+  scanner.lines = 40;
+  scanner.samples_per_line = 400;
+  lsr::adapters::write_points(path("scan.ply"), lsr::simulate_scan(lsr::make_test_shape("double-torus"), scanner).points);
+
+  const CliRun one = run(path("scan.ply") + " " + path("one.ply") + " --tiles 2 --report " + path("one.json"));
+  ASSERT_EQ(one.status, 0) << one.output;
+  const CliRun two = run_program(kMpiRun, path("scan.ply") + " " + path("two.ply") + " --report " + path("two.json"));
+  ASSERT_EQ(two.status, 0) << two.output;
+  EXPECT_NE(two.output.find("rank 1 of 2 shared its tiles, peak memory"), std::string::npos) << two.output;
+  EXPECT_EQ(read("one.ply"), read("two.ply"));
+  expect_closed_mesh(path("two.ply"), 2);
+  const nlohmann::json a = nlohmann::json::parse(read("one.json")), b = nlohmann::json::parse(read("two.json"));
+  EXPECT_EQ(a["time_steps"], b["time_steps"]);
+  EXPECT_EQ(a["spacing_input_units"], b["spacing_input_units"]);
+  EXPECT_EQ(a["noise_input_units"], b["noise_input_units"]);
+}
+
+TEST_F(Cli, AFailingMpiRankStopsThemAllAndNothingIsWritten) {
+  const CliRun r = run_program(kMpiRun, path("missing.ply") + " " + path("out.ply"));
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("missing.ply"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::ifstream(path("out.ply")).good());
+}
+
+}  // namespace
