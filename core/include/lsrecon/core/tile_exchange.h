@@ -7,7 +7,7 @@
 /// worker the whole per-point result, and worker 0 carries on with the mesh, the front and
 /// the fit. Every point's result is what one process computes (the same neighbours, the same
 /// arithmetic), so the output does not depend on the tiles or the workers. docs/how-it-works.md,
-/// "Tiles", says what is shared and what is not yet.
+/// "Tiles and MPI", says what is shared and what is not yet.
 #pragma once
 
 #include <cstddef>
