@@ -2,12 +2,13 @@
 /// @file local_sampling.cpp
 #include "sampling/local_sampling.h"
 
+#include "sampling/tile_runs.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include <omp.h>
 
@@ -162,49 +163,6 @@ double rim_smoothness(const LocalSampling<D>& sampling) {
     ratio2[i] = std::pow(sampling.noise[i] / std::max(sampling.spacing[i], 1e-300), 2);
   }
   return LocalSampling<D>::kRimSmoothness - 0.6 * median(std::move(ratio2));
-}
-
-// The tiles of n points among the workers (tile_exchange.h): worker w owns the points
-// [begin[w], begin[w + 1]), this worker's tiles are [cuts[j], cuts[j + 1]).
-struct TileRuns {
-  std::vector<std::size_t> begin;
-  std::vector<std::size_t> cuts;
-  const TileExchange* exchange = nullptr;
-
-  TileRuns(std::size_t n, const SamplingTiles& t) : exchange(t.exchange) {
-    const std::size_t workers = exchange ? std::size_t(exchange->workers()) : 1;
-    const std::size_t w = exchange ? std::size_t(exchange->worker()) : 0;
-    const std::size_t tiles = std::max({std::size_t(std::max(t.tiles, 1)), workers});
-    const auto tile_begin = [&](std::size_t j) { return j * n / tiles; };
-    for (std::size_t v = 0; v <= workers; ++v) begin.push_back(tile_begin(v * tiles / workers));
-    for (std::size_t j = w * tiles / workers; j <= (w + 1) * tiles / workers; ++j) cuts.push_back(tile_begin(j));
-  }
-  std::size_t first() const { return cuts.front(); }
-  std::size_t end() const { return cuts.back(); }
-  std::size_t workers() const { return begin.size() - 1; }
-  // Every worker's points' values (plain data) to every worker.
-  template <class T, class A>
-  void share(std::vector<T, A>& values) const {
-    if (workers() > 1) exchange->share(values.data(), sizeof(T), begin);
-  }
-  // The sum of every worker's value.
-  long sum(long mine) const {
-    if (workers() == 1) return mine;
-    std::vector<long> each(workers(), 0);
-    std::vector<std::size_t> slot(workers() + 1);
-    for (std::size_t v = 0; v < slot.size(); ++v) slot[v] = v;
-    each[std::size_t(exchange->worker())] = mine;
-    exchange->share(each.data(), sizeof(long), slot);
-    return std::accumulate(each.begin(), each.end(), 0L);
-  }
-};
-
-// The points [first, end) as queries: p itself when that is all of them.
-template <int D>
-const Points<D>& run_of(const Points<D>& p, std::size_t first, std::size_t end, Points<D>& copy) {
-  if (first == 0 && end == p.size()) return p;
-  copy.assign(p.begin() + long(first), p.begin() + long(end));
-  return copy;
 }
 
 // Of the open points (kRimGap free among their k nearest: a superset, as fewer neighbours
@@ -368,64 +326,6 @@ void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Ind
 }
 
 }  // namespace
-
-template <int D>
-Eigen::Matrix<double, D, D> tangent_frame(const Vec<D>& normal) {
-  Eigen::Matrix<double, D, D> frame;
-  frame.row(D - 1) = normal.transpose();
-  if constexpr (D == 2) {
-    frame.row(0) << -normal[1], normal[0];
-  } else {
-    const Vec<3> t = normal.unitOrthogonal();
-    frame.row(0) = t.transpose();
-    frame.row(1) = normal.cross(t).transpose();
-  }
-  return frame;
-}
-
-template <int D>
-auto HeightField<D>::monomials(const Eigen::Matrix<double, D - 1, 1>& x) -> Eigen::Matrix<double, kTerms, 1> {
-  Eigen::Matrix<double, kTerms, 1> m;
-  if constexpr (D == 2) {
-    m << 1.0, x[0], 0.5 * x[0] * x[0];
-  } else {
-    m << 1.0, x[0], x[1], 0.5 * x[0] * x[0], x[0] * x[1], 0.5 * x[1] * x[1];
-  }
-  return m;
-}
-
-template <int D>
-double HeightField<D>::height(const Eigen::Matrix<double, D - 1, 1>& x) const {
-  return Eigen::Map<const Eigen::Matrix<double, kTerms, 1>>(coefficients.data()).dot(monomials(x));
-}
-
-template <int D>
-Eigen::Matrix<double, D - 1, 1> HeightField<D>::slope(const Eigen::Matrix<double, D - 1, 1>& x) const {
-  const auto& c = coefficients;
-  Eigen::Matrix<double, D - 1, 1> g;
-  if constexpr (D == 2) {
-    g << c[1] + c[2] * x[0];
-  } else {
-    g << c[1] + c[3] * x[0] + c[4] * x[1], c[2] + c[4] * x[0] + c[5] * x[1];
-  }
-  return g;
-}
-
-template <int D>
-double HeightField<D>::largest_curvature() const {
-  const auto& c = coefficients;
-  if constexpr (D == 2) {
-    return std::abs(c[2]);
-  } else {
-    const Eigen::Matrix2d hessian = (Eigen::Matrix2d() << c[3], c[4], c[4], c[5]).finished();
-    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(hessian).eigenvalues().cwiseAbs().maxCoeff();
-  }
-}
-
-template struct HeightField<2>;
-template struct HeightField<3>;
-template Eigen::Matrix<double, 2, 2> tangent_frame<2>(const Vec<2>&);
-template Eigen::Matrix<double, 3, 3> tangent_frame<3>(const Vec<3>&);
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
