@@ -18,18 +18,26 @@ std::vector<char> between_facing_sheets(const NearestPointIndex<D>& data, const 
   constexpr int kNear = 16;
   const int k = std::min<int>(kNear, int(data.points().size()));
   std::vector<char> between(queries.size(), 0);
-  if (queries.empty() || k < 2) return between;
+  // Only the queries beyond their noise band are asked (most are not).
+  std::vector<std::size_t> asked;
+  Points<D> far;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    if (!(distance[q] > beyond[q])) continue;
+    asked.push_back(q);
+    far.push_back(queries[q]);
+  }
+  if (asked.empty() || k < 2) return between;
   LargeVector<Index> nearest;
-  data.query_k(queries, k, nearest, threads);
+  data.query_k(far, k, nearest, threads);
   const Points<D>& p = data.points();
 #pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
-  for (std::ptrdiff_t q = 0; q < std::ptrdiff_t(queries.size()); ++q) {
-    if (!(distance[q] > beyond[q])) continue;
+  for (std::ptrdiff_t slot = 0; slot < std::ptrdiff_t(asked.size()); ++slot) {
+    const std::size_t q = asked[std::size_t(slot)];
     // The unit directions q -> p of the near points that q faces.
     Vec<D> towards[kNear];
     int facing = 0;
     for (int j = 0; j < k; ++j) {
-      const Index i = nearest[std::size_t(q) * k + j];
+      const Index i = nearest[std::size_t(slot) * k + j];
       const Vec<D> d = p[i] - queries[q];
       const double length = d.norm();
       if (length > kReach * distance[q]) continue;
