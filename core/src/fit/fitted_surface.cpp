@@ -11,10 +11,62 @@
 #include "fit/surface_refinement.h"
 #include "mesh/data_metric.h"
 #include "sampling/residual_noise.h"
+#include "surface/unsupported_fairing.h"
 
 #include <algorithm>
 
 namespace lsr::detail {
+
+namespace {
+
+// Past the largest empty disc among random samples (1.45 local scales, local_sampling.h) no
+// sample supports the surface: there the fit extrapolates and the front is held by curvature
+// alone (attach_fit hands unsupported solid to the front from there too).
+constexpr double kUnsupported = 1.5;
+
+// The unsupported surface (over unseen sides, holes, cavities seen at grazing angles) is faired
+// (unsupported_fairing.h), with unit normals from its facets (the fit's there belong to
+// another sheet). A faired vertex moves towards its nearest sample by half its distance at
+// most: a single view's back lies 1-2 scales behind its front, and the fairing carried parts
+// of it through the data (measured with a support radius of one scale: hippo1's back showed
+// through its body).
+template <int D>
+void fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
+  constexpr double kStep = 4.0, kTowardsData = 0.5;
+  LevelSetMesh<D>& s = r.surface;
+  LargeVector<Index> nearest;
+  data.query_k(s.vertices, 1, nearest, threads);
+  std::vector<char> free(s.vertices.size());
+  Points<D> towards(s.vertices.size());  // to the nearest sample
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const EdgePoint& e = s.sources[i];
+    towards[i] = data.points()[std::size_t(nearest[i])] - s.vertices[i];
+    free[i] = towards[i].norm() > kUnsupported * ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
+  }
+  const Points<D> before = s.vertices;
+  if (fair_unsupported(s, free, kStep) == 0) return;
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    if (!free[i]) continue;
+    const double away = towards[i].norm(), closer = (s.vertices[i] - before[i]).dot(towards[i]) / away;
+    if (closer > kTowardsData * away) s.vertices[i] -= (closer - kTowardsData * away) / away * towards[i];
+  }
+  Points<D> n(s.vertices.size(), Vec<D>::Zero());
+  for (const auto& f : s.facets) {
+    Vec<D> c;
+    if constexpr (D == 3) {
+      c = (s.vertices[std::size_t(f[1])] - s.vertices[std::size_t(f[0])]).cross(s.vertices[std::size_t(f[2])] - s.vertices[std::size_t(f[0])]);
+    } else {
+      const Vec<D> t = s.vertices[std::size_t(f[1])] - s.vertices[std::size_t(f[0])];
+      c = Vec<D>(t[1], -t[0]);
+    }
+    for (const Index v : f) n[std::size_t(v)] += c;
+  }
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    if (free[i] && n[i].norm() > 0.0) r.normals[i] = n[i].normalized();
+  }
+}
+
+}  // namespace
 
 template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
@@ -22,9 +74,8 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
                 bool volume, int threads) {
-  // kUnsupported: past the largest empty disc (below); kHandover: where unsupported solid starts
-  // going to the front.
-  constexpr double band_factor = 3.0, kUnsupported = 1.5, kHandover = 1.0;
+  // kHandover: where unsupported solid starts going to the front (below).
+  constexpr double band_factor = 3.0, kHandover = 1.0;
   const auto is_over_hole = [&](std::size_t v) { return !over_hole.empty() && over_hole[v]; };
   std::vector<double> values(u.data(), u.data() + u.size());
   Points<D> band;
@@ -150,6 +201,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     const double share = (1.0 - e.t) * fit_share[std::size_t(e.a)] + e.t * fit_share[std::size_t(e.b)];
     if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
   }
+  fair_unsupported_parts(r, data, scale, threads);
   attach_volume(r, mesh, values, volume);
 }
 

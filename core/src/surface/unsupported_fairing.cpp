@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file unsupported_fairing.cpp
+#include "surface/unsupported_fairing.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <utility>
+
+namespace lsr {
+
+template <int D>
+std::size_t fair_unsupported(LevelSetMesh<D>& surface, const std::vector<char>& free, double step) {
+  const std::size_t n = surface.vertices.size();
+  std::vector<Index> column(n, -1);
+  Index unknowns = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (free[v]) column[v] = unknowns++;
+  }
+  if (unknowns == 0) return 0;
+  // The edge graph (each edge once: a closed surface's edge lies on two facets), as lists.
+  std::vector<std::pair<Index, Index>> edges;
+  edges.reserve(surface.facets.size() * D);
+  for (const auto& f : surface.facets) {
+    for (int i = 0; i < (D == 3 ? 3 : 1); ++i) {
+      const Index a = f[std::size_t(i)], b = f[std::size_t((i + 1) % D)];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<std::size_t> first(n + 1, 0);
+  for (const auto& [a, b] : edges) {
+    ++first[std::size_t(a) + 1];
+    ++first[std::size_t(b) + 1];
+  }
+  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+  std::vector<Index> next(2 * edges.size());
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for (const auto& [a, b] : edges) {
+      next[fill[std::size_t(a)]++] = b;
+      next[fill[std::size_t(b)]++] = a;
+    }
+  }
+
+  // Row v of (I + t L^2) x = x0, L = degree - adjacency: x_v + t sum over w in {v} and v's
+  // neighbours of L(v, w) L(w, :) x; the fixed vertices' terms go to the right-hand side.
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs(unknowns, D);
+  const auto add = [&](Index row, std::size_t u, double c) {
+    if (column[u] >= 0) {
+      entries.emplace_back(row, column[u], c);
+    } else {
+      rhs.row(row) -= c * surface.vertices[u].transpose();
+    }
+  };
+  const auto add_row_of_l = [&](Index row, std::size_t w, double c) {  // c L(w, :)
+    add(row, w, c * double(first[w + 1] - first[w]));
+    for (std::size_t k = first[w]; k < first[w + 1]; ++k) add(row, std::size_t(next[k]), -c);
+  };
+  for (std::size_t v = 0; v < n; ++v) {
+    const Index row = column[v];
+    if (row < 0) continue;
+    rhs.row(row) = surface.vertices[v].transpose();
+    entries.emplace_back(row, row, 1.0);
+    add_row_of_l(row, v, step * double(first[v + 1] - first[v]));
+    for (std::size_t k = first[v]; k < first[v + 1]; ++k) add_row_of_l(row, std::size_t(next[k]), -step);
+  }
+  Eigen::SparseMatrix<double> m(unknowns, unknowns);
+  m.setFromTriplets(entries.begin(), entries.end());  // duplicates summed
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(m);
+  if (solver.info() != Eigen::Success) return 0;
+  const Eigen::MatrixXd x = solver.solve(rhs);
+  if (!x.allFinite()) return 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (column[v] >= 0) surface.vertices[v] = x.row(column[v]).transpose();
+  }
+  return std::size_t(unknowns);
+}
+
+template std::size_t fair_unsupported<2>(LevelSetMesh<2>&, const std::vector<char>&, double);
+template std::size_t fair_unsupported<3>(LevelSetMesh<3>&, const std::vector<char>&, double);
+
+}  // namespace lsr
