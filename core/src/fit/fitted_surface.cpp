@@ -21,7 +21,7 @@ namespace {
 
 // Past the largest empty disc among random samples (1.45 local scales, local_sampling.h) no
 // sample supports the surface: there the fit extrapolates and the front is held by curvature
-// alone (attach_fit hands unsupported solid to the front from there too).
+// alone (so attach_fit's merge may join there too).
 constexpr double kUnsupported = 1.5;
 
 // The unsupported surface (over unseen sides, holes, cavities seen at grazing angles) is faired
