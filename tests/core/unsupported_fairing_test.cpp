@@ -33,6 +33,7 @@ LevelSetMesh<3> periodic_grid(int n, const Height& z) {
   return s;
 }
 
+// Only the heights are looked at: the grid's x and y are not periodic, only its graph is.
 TEST(UnsupportedFairing, DampsEachWaveByItsEigenvalue) {
   const int n = 32;
   const double step = 16.0;
@@ -46,8 +47,6 @@ TEST(UnsupportedFairing, DampsEachWaveByItsEigenvalue) {
       for (int j = 0; j < n; ++j) {
         const Vec<3>& x = s.vertices[std::size_t(i * n + j)];
         EXPECT_NEAR(x.z(), damping * wave(i, j), 1e-12) << "w " << w;
-        // The grid's own coordinates are not periodic: only their graph is; x and y are not
-        // looked at here.
       }
     }
   }
