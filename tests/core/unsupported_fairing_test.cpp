@@ -87,6 +87,23 @@ TEST(UnsupportedFairing, FixedVerticesStayAndFreeOnesSolveTheirRows) {
   }
 }
 
+// Growth by hysteresis: from one seed, over every allowed vertex joined to it by edges, and no
+// farther (a band of allowed rows apart from the seed's stays as it was).
+TEST(UnsupportedFairing, GrowsOverAllowedVerticesJoinedByEdges) {
+  const int n = 16;
+  const LevelSetMesh<3> s = periodic_grid(n, [](int, int) { return 0.0; });
+  std::vector<char> flags(s.vertices.size(), 0), allowed(s.vertices.size(), 0);
+  const auto row = [n](std::size_t v) { return int(v) / n; };
+  for (std::size_t v = 0; v < allowed.size(); ++v) allowed[v] = (row(v) >= 3 && row(v) <= 10) || row(v) == 13 || row(v) == 14;
+  flags[std::size_t(5 * n + 5)] = 1;
+  flags[std::size_t(0 * n + 7)] = 1;  // a seed that is not itself allowed stays, alone
+  grow_over_edges(s, flags, allowed);
+  for (std::size_t v = 0; v < flags.size(); ++v) {
+    const bool expected = (row(v) >= 3 && row(v) <= 10) || v == std::size_t(7);
+    EXPECT_EQ(bool(flags[v]), expected) << "vertex " << v;
+  }
+}
+
 TEST(UnsupportedFairing, NoFreeVertexMovesNothing) {
   LevelSetMesh<3> s = periodic_grid(8, [](int i, int j) { return double(i * j); });
   const LevelSetMesh<3> before = s;

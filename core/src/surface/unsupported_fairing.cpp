@@ -10,16 +10,18 @@
 
 namespace lsr {
 
+namespace {
+
+// The surface's edges as adjacency lists: v's neighbours are next[first[v] .. first[v + 1]).
+struct EdgeGraph {
+  std::vector<std::size_t> first;
+  std::vector<Index> next;
+};
+
 template <int D>
-std::size_t fair_unsupported(LevelSetMesh<D>& surface, const std::vector<char>& free, double step) {
+EdgeGraph edge_graph(const LevelSetMesh<D>& surface) {
   const std::size_t n = surface.vertices.size();
-  std::vector<Index> column(n, -1);
-  Index unknowns = 0;
-  for (std::size_t v = 0; v < n; ++v) {
-    if (free[v]) column[v] = unknowns++;
-  }
-  if (unknowns == 0) return 0;
-  // The edge graph (each edge once: a closed surface's edge lies on two facets), as lists.
+  // Each edge once: a closed surface's edge lies on two facets.
   std::vector<std::pair<Index, Index>> edges;
   edges.reserve(surface.facets.size() * D);
   for (const auto& f : surface.facets) {
@@ -30,20 +32,54 @@ std::size_t fair_unsupported(LevelSetMesh<D>& surface, const std::vector<char>& 
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  std::vector<std::size_t> first(n + 1, 0);
+  EdgeGraph g{std::vector<std::size_t>(n + 1, 0), std::vector<Index>(2 * edges.size())};
   for (const auto& [a, b] : edges) {
-    ++first[std::size_t(a) + 1];
-    ++first[std::size_t(b) + 1];
+    ++g.first[std::size_t(a) + 1];
+    ++g.first[std::size_t(b) + 1];
   }
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  std::vector<Index> next(2 * edges.size());
-  {
-    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-    for (const auto& [a, b] : edges) {
-      next[fill[std::size_t(a)]++] = b;
-      next[fill[std::size_t(b)]++] = a;
+  for (std::size_t v = 0; v < n; ++v) g.first[v + 1] += g.first[v];
+  std::vector<std::size_t> fill(g.first.begin(), g.first.end() - 1);
+  for (const auto& [a, b] : edges) {
+    g.next[fill[std::size_t(a)]++] = b;
+    g.next[fill[std::size_t(b)]++] = a;
+  }
+  return g;
+}
+
+}  // namespace
+
+template <int D>
+void grow_over_edges(const LevelSetMesh<D>& surface, std::vector<char>& flags, const std::vector<char>& allowed) {
+  const EdgeGraph g = edge_graph(surface);
+  std::vector<std::size_t> stack;
+  for (std::size_t v = 0; v < flags.size(); ++v) {
+    if (flags[v]) stack.push_back(v);
+  }
+  while (!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    for (std::size_t k = g.first[v]; k < g.first[v + 1]; ++k) {
+      const auto w = std::size_t(g.next[k]);
+      if (allowed[w] && !flags[w]) {
+        flags[w] = 1;
+        stack.push_back(w);
+      }
     }
   }
+}
+
+template <int D>
+std::size_t fair_unsupported(LevelSetMesh<D>& surface, const std::vector<char>& free, double step) {
+  const std::size_t n = surface.vertices.size();
+  std::vector<Index> column(n, -1);
+  Index unknowns = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (free[v]) column[v] = unknowns++;
+  }
+  if (unknowns == 0) return 0;
+  const EdgeGraph g = edge_graph(surface);
+  const auto& first = g.first;
+  const auto& next = g.next;
 
   // Row v of (I + t L^2) x = x0, L = degree - adjacency: x_v + t sum over w in {v} and v's
   // neighbours of L(v, w) L(w, :) x; the fixed vertices' terms go to the right-hand side.
@@ -80,6 +116,8 @@ std::size_t fair_unsupported(LevelSetMesh<D>& surface, const std::vector<char>& 
   return std::size_t(unknowns);
 }
 
+template void grow_over_edges<2>(const LevelSetMesh<2>&, std::vector<char>&, const std::vector<char>&);
+template void grow_over_edges<3>(const LevelSetMesh<3>&, std::vector<char>&, const std::vector<char>&);
 template std::size_t fair_unsupported<2>(LevelSetMesh<2>&, const std::vector<char>&, double);
 template std::size_t fair_unsupported<3>(LevelSetMesh<3>&, const std::vector<char>&, double);
 

@@ -21,6 +21,11 @@
 
 namespace lsr {
 
+/// @brief Adds to `flags` every vertex `allowed` that a path of surface edges through allowed
+/// vertices joins to a flagged one (the flagged set grown by hysteresis).
+template <int D>
+void grow_over_edges(const LevelSetMesh<D>& surface, std::vector<char>& flags, const std::vector<char>& allowed);
+
 /// @brief Replaces the positions x0 of the vertices of `surface` flagged `free` by the solution
 /// x of (I + step L^2) x = x0 there, L = degree - adjacency of the surface's edges, the other
 /// vertices fixed (their positions enter the right-hand side). The matrix is symmetric
