@@ -50,11 +50,12 @@ EdgeGraph edge_graph(const LevelSetMesh<D>& surface) {
 
 template <int D>
 void grow_over_edges(const LevelSetMesh<D>& surface, std::vector<char>& flags, const std::vector<char>& allowed) {
-  const EdgeGraph g = edge_graph(surface);
   std::vector<std::size_t> stack;
   for (std::size_t v = 0; v < flags.size(); ++v) {
     if (flags[v]) stack.push_back(v);
   }
+  if (stack.empty()) return;  // the graph costs 0.4 s at 570k vertices (a 1M-point scan)
+  const EdgeGraph g = edge_graph(surface);
   while (!stack.empty()) {
     const std::size_t v = stack.back();
     stack.pop_back();
