@@ -2,7 +2,7 @@
 /// @file lsrecon_snapshot.cpp
 /// @brief Renders meshes (.ply, .vtu) to a PNG, offscreen (run under xvfb-run), one viewport
 /// per input with its name as a label:
-///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --slice | --top] [--columns N] [--width W] [--height H]
+///   lsrecon-snapshot OUTPUT.png INPUT... [--clip | --slice | --top | --below] [--columns N] [--width W] [--height H]
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
 /// grading of an adaptive mesh); --slice shows only the section by that plane (the elements'
 /// shapes: those of an anisotropic mesh are long along the surface); --top looks down the z
@@ -32,6 +32,7 @@
 #include <vtkWindowToImageFilter.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkVertexGlyphFilter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <unistd.h>
@@ -46,7 +47,7 @@
 namespace {
 
 struct View {
-  bool clip = false, slice = false, top = false, edges = false;
+  bool clip = false, slice = false, top = false, below = false, edges = false;
 };
 
 vtkSmartPointer<vtkDataSet> read(const std::string& path) {
@@ -54,7 +55,11 @@ vtkSmartPointer<vtkDataSet> read(const std::string& path) {
     vtkNew<vtkPLYReader> reader;
     reader->SetFileName(path.c_str());
     reader->Update();
-    return vtkSmartPointer<vtkDataSet>(reader->GetOutput());
+    if (reader->GetOutput()->GetNumberOfCells() > 0) return vtkSmartPointer<vtkDataSet>(reader->GetOutput());
+    vtkNew<vtkVertexGlyphFilter> points;  // a cloud: one vertex cell per point
+    points->SetInputConnection(reader->GetOutputPort());
+    points->Update();
+    return vtkSmartPointer<vtkDataSet>(points->GetOutput());
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
@@ -116,6 +121,11 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
   vtkNew<vtkProperty> back;  // faces seen from behind (inward-oriented) show blue
   back->SetColor(0.45, 0.6, 0.9);
   actor->SetBackfaceProperty(back);
+  if (data->GetCellType(0) == VTK_VERTEX) {  // a cloud, beside its reconstruction
+    actor->GetProperty()->SetColor(0.2, 0.2, 0.3);
+    actor->GetProperty()->SetPointSize(2.0);
+    actor->GetProperty()->LightingOff();
+  }
   if (v.edges) {
     actor->GetProperty()->SetEdgeVisibility(true);
     actor->GetProperty()->SetEdgeColor(0.35, 0.3, 0.2);
@@ -147,7 +157,7 @@ void add_view(vtkRenderWindow* window, vtkDataSet* data, const std::string& titl
     camera->SetPosition(0.5 * (b[0] + b[1]), b[2] - 3 * (b[3] - b[2]), 0.5 * (b[4] + b[5]));
     camera->SetViewUp(0, 0, 1);
   } else if (!flat && !v.top) {
-    camera->Elevation(30);
+    camera->Elevation(v.below ? -30 : 30);
     camera->Azimuth(30);
   }
   renderer->ResetCamera();
@@ -181,6 +191,7 @@ int main(int argc, char** argv) {
       .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
       .flag("slice", v.slice, "show only the section of volume meshes by the plane y = centre, with its edges")
       .flag("top", v.top, "look down the z axis (flat, 2D data always is)")
+      .flag("below", v.below, "look from below (the underside of a scan from above)")
       .flag("edges", v.edges, "draw the triangles' edges")
       .number("columns", "N", columns, 0, 100, "views per row; 0 = up to 4")
       .number("width", "W", width, 0, 20000, "image width in pixels; 0 = from the number of views")
