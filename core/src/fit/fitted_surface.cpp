@@ -11,6 +11,7 @@
 #include "fit/surface_refinement.h"
 #include "mesh/data_metric.h"
 #include "sampling/residual_noise.h"
+#include "surface/facet_normals.h"
 #include "surface/unsupported_fairing.h"
 
 #include <algorithm>
@@ -25,16 +26,16 @@ namespace {
 constexpr double kUnsupported = 1.5;
 
 // The unsupported surface (over unseen sides, holes, cavities seen at grazing angles) is faired
-// (unsupported_fairing.h), with unit normals from its facets (the fit's there belong to
-// another sheet). A faired vertex moves towards its nearest sample by half its distance at
-// most: a single view's back lies 1-2 scales behind its front, and the fairing carried parts
-// of it through the data (measured with a support radius of one scale: hippo1's back showed
-// through its body). The faired set grows from the vertices past 1.5 scales over the
+// (unsupported_fairing.h); returns the faired vertices (empty: none), which take their facets'
+// normals (the fit's there belong to another sheet). A faired vertex moves towards its
+// nearest sample by half its distance at most: a single view's back lies 1-2 scales behind
+// its front, and the fairing carried parts of it through the data (measured with a support
+// radius of one scale: hippo1's back showed through its body). The faired set grows from the vertices past 1.5 scales over the
 // surface's edges through those past one (hysteresis): the rims of unseen parts, between one
 // and 1.5 scales, are faired with them, while a vertex past one scale in a gap of a well
 // sampled surface is left alone (all vertices past one scale: clean i.i.d. Hausdorff 1.63x).
 template <int D>
-void fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
+std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
   constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 1.0;
   LevelSetMesh<D>& s = r.surface;
   LargeVector<Index> nearest;
@@ -50,26 +51,13 @@ void fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<
   }
   grow_over_edges(s, free, loose);
   const Points<D> before = s.vertices;
-  if (fair_unsupported(s, free, kStep) == 0) return;
+  if (fair_unsupported(s, free, kStep) == 0) return {};
   for (std::size_t i = 0; i < free.size(); ++i) {
     if (!free[i]) continue;
     const double away = towards[i].norm(), closer = (s.vertices[i] - before[i]).dot(towards[i]) / away;
     if (closer > kTowardsData * away) s.vertices[i] -= (closer - kTowardsData * away) / away * towards[i];
   }
-  Points<D> n(s.vertices.size(), Vec<D>::Zero());
-  for (const auto& f : s.facets) {
-    Vec<D> c;
-    if constexpr (D == 3) {
-      c = (s.vertices[std::size_t(f[1])] - s.vertices[std::size_t(f[0])]).cross(s.vertices[std::size_t(f[2])] - s.vertices[std::size_t(f[0])]);
-    } else {
-      const Vec<D> t = s.vertices[std::size_t(f[1])] - s.vertices[std::size_t(f[0])];
-      c = Vec<D>(t[1], -t[0]);
-    }
-    for (const Index v : f) n[std::size_t(v)] += c;
-  }
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    if (free[i] && n[i].norm() > 0.0) r.normals[i] = n[i].normalized();
-  }
+  return free;
 }
 
 }  // namespace
@@ -207,7 +195,7 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     const double share = (1.0 - e.t) * fit_share[std::size_t(e.a)] + e.t * fit_share[std::size_t(e.b)];
     if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
   }
-  fair_unsupported_parts(r, data, scale, threads);
+  set_facet_normals(r.surface, fair_unsupported_parts(r, data, scale, threads), r.normals);
   attach_volume(r, mesh, values, volume);
 }
 
