@@ -40,7 +40,7 @@ TEST(UnsupportedFairing, DampsEachWaveByItsEigenvalue) {
   for (const int w : {2, 4, 8, 16, 32}) {
     const auto wave = [&](int i, int) { return std::cos(2.0 * kPi * i / w); };
     LevelSetMesh<3> s = periodic_grid(n, wave);
-    EXPECT_EQ(fair_unsupported(s, std::vector<char>(s.vertices.size(), 1), step), s.vertices.size());
+    EXPECT_EQ(fair_unsupported(s, edge_graph(s), std::vector<char>(s.vertices.size(), 1), step), s.vertices.size());
     const double l = 4.0 * (1.0 - std::cos(2.0 * kPi / w));
     const double damping = 1.0 / (1.0 + step * l * l);
     for (int i = 0; i < n; ++i) {
@@ -62,7 +62,7 @@ TEST(UnsupportedFairing, FixedVerticesStayAndFreeOnesSolveTheirRows) {
   for (int i = 3; i < 11; ++i) {
     for (int j = 2; j < 9; ++j) free[std::size_t(i * n + j)] = 1;
   }
-  EXPECT_EQ(fair_unsupported(s, free, step), 56u);
+  EXPECT_EQ(fair_unsupported(s, edge_graph(s), free, step), 56u);
   // Row v: x_v + t (L (L x))_v = x0_v, (L y)_v = 6 y_v - the sum over its six neighbours.
   const int di[6] = {1, -1, 0, 0, 1, -1}, dj[6] = {0, 0, 1, -1, 1, -1};
   const auto laplacian = [&](const std::vector<Vec<3>>& y) {
@@ -97,7 +97,7 @@ TEST(UnsupportedFairing, GrowsOverAllowedVerticesJoinedByEdges) {
   for (std::size_t v = 0; v < allowed.size(); ++v) allowed[v] = (row(v) >= 3 && row(v) <= 10) || row(v) == 13 || row(v) == 14;
   flags[std::size_t(5 * n + 5)] = 1;
   flags[std::size_t(0 * n + 7)] = 1;  // a seed that is not itself allowed stays, alone
-  grow_over_edges(s, flags, allowed);
+  grow_over_edges(edge_graph(s), flags, allowed);
   for (std::size_t v = 0; v < flags.size(); ++v) {
     const bool expected = (row(v) >= 3 && row(v) <= 10) || v == std::size_t(7);
     EXPECT_EQ(bool(flags[v]), expected) << "vertex " << v;
@@ -107,7 +107,7 @@ TEST(UnsupportedFairing, GrowsOverAllowedVerticesJoinedByEdges) {
 TEST(UnsupportedFairing, NoFreeVertexMovesNothing) {
   LevelSetMesh<3> s = periodic_grid(8, [](int i, int j) { return double(i * j); });
   const LevelSetMesh<3> before = s;
-  EXPECT_EQ(fair_unsupported(s, std::vector<char>(s.vertices.size(), 0), 16.0), 0u);
+  EXPECT_EQ(fair_unsupported(s, edge_graph(s), std::vector<char>(s.vertices.size(), 0), 16.0), 0u);
   EXPECT_EQ(s.vertices, before.vertices);
 }
 

@@ -49,9 +49,11 @@ std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const Neare
     free[i] = away > kUnsupported;
     loose[i] = away > kLoose;
   }
-  grow_over_edges(s, free, loose);
+  if (std::find(free.begin(), free.end(), 1) == free.end()) return {};
+  const EdgeGraph edges = edge_graph(s);
+  grow_over_edges(edges, free, loose);
   const Points<D> before = s.vertices;
-  if (fair_unsupported(s, free, kStep) == 0) return {};
+  if (fair_unsupported(s, edges, free, kStep) == 0) return {};
   for (std::size_t i = 0; i < free.size(); ++i) {
     if (!free[i]) continue;
     const double away = towards[i].norm(), closer = (s.vertices[i] - before[i]).dot(towards[i]) / away;
