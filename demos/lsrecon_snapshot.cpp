@@ -6,7 +6,8 @@
 /// --clip cuts a volume mesh by the plane y = centre and shows the cut with its edges (the
 /// grading of an adaptive mesh); --slice shows only the section by that plane (the elements'
 /// shapes: those of an anisotropic mesh are long along the surface); --top looks down the z
-/// axis. Flat (2D) data is seen from above.
+/// axis, --below looks up at the underside. Flat (2D) data is seen from above. A PLY without
+/// faces (a cloud) is drawn as its points, e.g. beside its reconstruction.
 /// Back faces are blue: a closed surface that shows blue is oriented inwards there.
 #include "command_line.h"
 
@@ -185,8 +186,8 @@ int main(int argc, char** argv) {
   int columns = 0, width = 0, height = 0;
   lsr::demos::CommandLine line("lsrecon-snapshot", LSRECON_VERSION,
                                "usage: lsrecon-snapshot OUTPUT.png INPUT.{ply,vtu}... [options]\n\n"
-                               "Renders meshes (and .vtu volume results) offscreen to one PNG, one view per input\n"
-                               "(without an X display it runs itself under xvfb-run).\n");
+                               "Renders meshes (and .vtu volume results; a PLY without faces as its points) offscreen\n"
+                               "to one PNG, one view per input (without an X display it runs itself under xvfb-run).\n");
   line.group("view")
       .flag("clip", v.clip, "cut volume meshes by the plane y = centre and show the cut with its edges")
       .flag("slice", v.slice, "show only the section of volume meshes by the plane y = centre, with its edges")

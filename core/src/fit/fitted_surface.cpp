@@ -30,10 +30,11 @@ constexpr double kUnsupported = 1.5;
 // normals (the fit's there belong to another sheet). A faired vertex moves towards its
 // nearest sample by half its distance at most: a single view's back lies 1-2 scales behind
 // its front, and the fairing carried parts of it through the data (measured with a support
-// radius of one scale: hippo1's back showed through its body). The faired set grows from the vertices past 1.5 scales over the
-// surface's edges through those past one (hysteresis): the rims of unseen parts, between one
-// and 1.5 scales, are faired with them, while a vertex past one scale in a gap of a well
-// sampled surface is left alone (all vertices past one scale: clean i.i.d. Hausdorff 1.63x).
+// radius of one scale: hippo1's back showed through its body). The faired set grows from the
+// vertices past 1.5 scales over the surface's edges through those past one (hysteresis): the
+// rims of unseen parts, between one and 1.5 scales, are faired with them, while a vertex past
+// one scale in a gap of a well sampled surface is left alone (all vertices past one scale:
+// clean i.i.d. Hausdorff 1.63x).
 template <int D>
 std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
   constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 1.0;
