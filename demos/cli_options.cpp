@@ -50,12 +50,17 @@ const char* initial_front_name(lsr::InitialFront f) {
   return f == lsr::InitialFront::tagged ? "tagged" : f == lsr::InitialFront::enclosing ? "enclose" : "inside";
 }
 
+const char* scan_lines_name(lsr::ScanLines s) {
+  return s == lsr::ScanLines::yes ? "yes" : s == lsr::ScanLines::no ? "no" : "auto";
+}
+
 // Every option once: its default is the value Cli (and so lsr::ReconstructionOptions) starts with.
 Cli parse(int argc, char** argv) {
   Cli c;
   auto& s = c.solver;
   lsr::demos::CommandLine line("lsrecon", LSRECON_VERSION, kUsage, kExitStatus);
   std::string init = initial_front_name(s.start.initial_front);
+  std::string scan_lines = scan_lines_name(s.sampling.scan_lines);
   bool no_fit = false, keep_outliers = false;
   auto resolution = [&line](const std::string& flag, double r) {
     if (r > 0 && r < 4) line.fail(flag + " must be 0 (automatic) or at least 4");
@@ -104,6 +109,8 @@ Cli parse(int argc, char** argv) {
       .number("hole-radius", "H", s.sampling.hole_radius, -1, 0.49, "span sampling holes up to radius H with tangent discs on their rims (docs/how-it-works.md: Sampling holes); -1 = " +
                   format_number(lsr::automatic_defaults(3).hole_radius) + " in 3D, off in 2D; 0 = off");
   line.group("data and result")
+      .text("scan-lines", "MODE", scan_lines, "3D: read the points as scan lines (yes: spacings from the gaps between "
+            "lines) or as scattered samples (no); auto = decided from the cloud", {"auto", "yes", "no"})
       .flag("keep-outliers", keep_outliers, "keep isolated points (nearest neighbour farther than " +
             format_number(s.sampling.outlier_factor) + " local spacings); by default they are left out")
       .number("sor-mean-k", "K", c.statistical.mean_k, 0, 1000,
@@ -128,6 +135,7 @@ Cli parse(int argc, char** argv) {
   const std::vector<std::string> positional = line.parse(argc, argv, 1, 2, "INPUT OUTPUT (or --demo SHAPE OUTPUT)");
   if (no_fit) s.output.fit_surface = false;
   if (keep_outliers) s.sampling.outlier_factor = 0.0;
+  s.sampling.scan_lines = scan_lines == "yes" ? lsr::ScanLines::yes : scan_lines == "no" ? lsr::ScanLines::no : lsr::ScanLines::automatic;
   s.start.initial_front = init == "inside" ? lsr::InitialFront::inside
                     : init == "enclose" ? lsr::InitialFront::enclosing
                                         : lsr::InitialFront::tagged;

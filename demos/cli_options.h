@@ -28,6 +28,7 @@ bool is_2d_shape(const std::string& s);
 bool is_curve_output(const std::string& ext);
 bool is_mesh_output(const std::string& ext);
 const char* initial_front_name(lsr::InitialFront f);
+const char* scan_lines_name(lsr::ScanLines s);
 
 /// @brief Parses the command line; exits 2 with a message naming the option on a bad one, 0
 /// after --help or --version.

@@ -34,6 +34,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                         {"hole_radius_unit_box", o.sampling.hole_radius},
                         {"fit_surface", o.output.fit_surface},
                         {"outlier_factor", o.sampling.outlier_factor},
+                        {"scan_lines", scan_lines_name(o.sampling.scan_lines)},
                         {"renormalization_interval", o.evolution.renormalization_interval},
                         {"initial_front", initial_front_name(o.start.initial_front)},
                         {"max_memory_bytes", o.limits.max_memory},
@@ -78,6 +79,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"unreached_points", r.unreached_points},
                  {"spacing_input_units", r.spacing},
                  {"noise_input_units", r.noise},
+                 {"scan_lines", r.scan_lines},
                  {"tagged_start", r.tagged_start},
                  {"sealed_cavities", r.sealed_cavities},
                  {"open_side_points", r.open_side_points},
@@ -143,6 +145,10 @@ void summarize(const lsr::ReconstructionResult<D>& r, double outlier_factor, boo
     std::fprintf(stderr, "lsrecon: closed %d opening(s) narrower than the hole radius through which the outside "
                          "reached an inside (an open end a sampling hole made); --hole-radius 0 leaves them open\n",
                  r.sealed_cavities);
+  }
+  if (r.scan_lines) {
+    std::fprintf(stderr, "lsrecon: read as scan lines (dense along lines, sparser across): spacings from the gaps "
+                         "between lines; --scan-lines no reads the points as scattered samples\n");
   }
   if (r.open_side_points > 0) {
     std::fprintf(stderr, "lsrecon: the data are open (%lld points seen from both sides: an unseen underside, a single "

@@ -66,17 +66,18 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                                 : spanning == HeightFieldsAt::rims ? HeightFieldsAt::all_and_rims
                                                                    : HeightFieldsAt::all;
   const SamplingTiles tiles{o.limits.tiles, o.limits.exchange.get()};
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles);
+  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
     r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
     require_spanning(in.points);
     box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
     data = NearestPointIndex<D>(box.to_unit(in.points));
-    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles);
+    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
   }
   const double spacing = median(sampling.spacing);
   r.noise = median(sampling.noise) / box.scale();
+  r.scan_lines = sampling.scan_lines;
   r.spacing = spacing / box.scale();
   std::vector<double> point_scale = local_scales(sampling);
   clock.end("sampling");

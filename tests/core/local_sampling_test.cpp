@@ -58,6 +58,33 @@ TEST(LocalSampling, ScanLinesGiveThePlanesNormalAndASpacingThatSeesTheGapBetween
   EXPECT_LT(median(s.noise), 1e-9);
 }
 
+// The same lines read as the caller says: as scattered samples, a line point's spacing is the
+// 6th distinct neighbour's distance along its line, 3 a; random samples read as scan lines take
+// spacings at least their own (the empty disc only raises them).
+TEST(LocalSampling, ScanLinesCanBeSetEitherWay) {
+  const double a = 0.002, gap = 10 * a;
+  Points<3> lines;
+  for (int j = 0; j < 20; ++j) {
+    for (int i = 0; i < 200; ++i) lines.emplace_back(0.3 + a * i, 0.3 + gap * j, 0.5);
+  }
+  const NearestPointIndex<3> line_index(lines);
+  const std::size_t middle = 10 * 200 + 100;
+  EXPECT_TRUE(estimate_local_sampling(line_index).scan_lines);
+  EXPECT_TRUE(estimate_local_sampling(line_index, 0, HeightFieldsAt::none, Progress(), {}, ScanLines::yes).scan_lines);
+  const LocalSampling<3> scattered = estimate_local_sampling(line_index, 0, HeightFieldsAt::none, Progress(), {}, ScanLines::no);
+  EXPECT_FALSE(scattered.scan_lines);
+  EXPECT_NEAR(scattered.spacing[middle], 3 * a, 1e-12);
+
+  const Points<3> random = sample_implicit_surface([](const Vec<3>& x) { return x.norm() - 1.0; }, -1.1 * Vec<3>::Ones(),
+                                                   1.1 * Vec<3>::Ones(), 5000, 5);
+  const NearestPointIndex<3> random_index(random);
+  const LocalSampling<3> automatic = estimate_local_sampling(random_index);
+  EXPECT_FALSE(automatic.scan_lines);
+  const LocalSampling<3> as_lines = estimate_local_sampling(random_index, 0, HeightFieldsAt::none, Progress(), {}, ScanLines::yes);
+  EXPECT_TRUE(as_lines.scan_lines);
+  for (std::size_t i = 0; i < random.size(); ++i) ASSERT_GE(as_lines.spacing[i], automatic.spacing[i]);
+}
+
 // Dense noisy scan lines: the same plane with noise sigma = 6 a along z. The 16 nearest are
 // mostly a noisy piece of one line, spread along x and z, not along y: their median elongation
 // (about 0.56) reads like i.i.d. samples, and the PCA normal of most lies along y, across the

@@ -71,10 +71,12 @@ TEST_F(Cli, WritesEveryMeshFormatAndTheReport) {
   for (const char* field : {"input_points", "dimension", "h_min_unit_box", "mesh_vertices", "mesh_simplices", "time_steps",
                             "status", "converged", "residual_input_units", "tolerance_input_units", "stage_seconds",
                             "total_seconds", "peak_memory_mib", "output_vertices", "output_faces", "components",
-                            "watertight", "options"}) {
+                            "watertight", "scan_lines", "options"}) {
     EXPECT_TRUE(j.contains(field)) << field;
   }
   EXPECT_TRUE(j["watertight"].get<bool>());
+  EXPECT_FALSE(j["scan_lines"].get<bool>());  // random samples
+  EXPECT_EQ(j["options"]["scan_lines"].get<std::string>(), "auto");
   EXPECT_EQ(j["options"]["resolution"].get<double>(), 32.0);
   std::vector<std::string> stages;
   for (const auto& s : j["stage_seconds"]) stages.push_back(s["stage"].get<std::string>());
@@ -89,6 +91,11 @@ TEST_F(Cli, WritesEveryMeshFormatAndTheReport) {
   std::ifstream odd_in(odd);
   const nlohmann::json o = nlohmann::json::parse(odd_in);
   EXPECT_EQ(o["output"].get<std::string>(), path("s.ply"));
+  // Read as scan lines when told, and said so.
+  const CliRun lines = run("--demo sphere --points 3000 --resolution 32 --scan-lines yes " + path("s.ply") + " --report " + path("l.json"));
+  ASSERT_EQ(lines.status, 0) << lines.output;
+  EXPECT_NE(lines.output.find("read as scan lines"), std::string::npos) << lines.output;
+  EXPECT_TRUE(nlohmann::json::parse(read("l.json"))["scan_lines"].get<bool>());
 }
 
 TEST_F(Cli, WritesVtkAsPclDoes) {

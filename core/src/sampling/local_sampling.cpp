@@ -292,12 +292,16 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
 template <int D>
 void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Index>& neighbours, int k, int threads,
                          std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress,
-                         const TileRuns& tiles) {
+                         const TileRuns& tiles, ScanLines mode) {
   constexpr int wide = LocalSampling<D>::kHoleNeighbours;
   const Points<D>& p = data.points();
   if (p.size() < std::size_t(wide)) return;
-  tiles.share(elongation);
-  if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
+  if (mode == ScanLines::no) return;
+  if (mode == ScanLines::automatic) {
+    tiles.share(elongation);
+    if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
+  }
+  s.scan_lines = true;
   std::vector<double> hole(p.size()), noise(p.size());
   for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
     progress.update("sampling", -1.0);
@@ -335,7 +339,7 @@ double median(std::vector<double> values) {
 
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, HeightFieldsAt height_fields,
-                                         const Progress& progress, const SamplingTiles& tiling) {
+                                         const Progress& progress, const SamplingTiles& tiling, ScanLines scan_lines) {
   constexpr int k = LocalSampling<D>::kNeighbours;
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
@@ -369,7 +373,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   neighbourhood_median(spacing, neighbours, k, first, s.spacing, t);
   neighbourhood_median(noise, neighbours, k, first, s.noise, t);
   progress.update("sampling", -1.0);
-  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress, tiles);
+  if constexpr (D == 3) adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress, tiles, scan_lines);
   tiles.share(s.spacing);
   tiles.share(s.noise);
   tiles.share(s.normals);
@@ -389,7 +393,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   return s;
 }
 
-template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&);
-template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&);
+template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines);
+template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines);
 
 }  // namespace lsr

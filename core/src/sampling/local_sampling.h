@@ -17,6 +17,7 @@
 
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/progress.h"
+#include "lsrecon/core/reconstruction_options.h"
 #include "lsrecon/core/tile_exchange.h"
 
 #include <array>
@@ -59,6 +60,7 @@ struct LocalSampling {
   /// such points lie among its kNeighbours nearest: the rim of a sampling hole or of an open
   /// scan. Empty unless height fields are asked for at the rims.
   std::vector<char> rim;
+  bool scan_lines = false;  ///< 3D: read as scan lines (below)
   static constexpr double kRimGap = 2.09;  ///< radians (120 degrees); pi on a straight rim
   static constexpr int kRimNeighbours = 32;
   /// mean |cos| of the angles between a rim point's normal and its neighbours' at least
@@ -102,10 +104,12 @@ struct SamplingTiles {
 /// point they took 0.24 s of the 0.54 s of the sampling stage on a 200k-point torus)
 /// @param progress stage "sampling", fraction unknown, between the passes over the points
 /// (each up to a minute at 10M points); throws Cancelled
+/// @param scan_lines 3D: whether to read the cloud as scan lines, automatic: decide from it
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads = 0,
                                          HeightFieldsAt height_fields = HeightFieldsAt::none,
-                                         const Progress& progress = Progress(), const SamplingTiles& tiles = {});
+                                         const Progress& progress = Progress(), const SamplingTiles& tiles = {},
+                                         ScanLines scan_lines = ScanLines::automatic);
 
 /// @brief The median of values (copied; empty gives 0).
 double median(std::vector<double> values);

@@ -38,6 +38,14 @@ enum class LinearSolver {
   gmres_reference,     ///< the paper's (I - dt beta D M), assembled, Eigen's GMRES
 };
 
+/// @brief How the sampling reads a 3D cloud: as scan lines (dense along lines, 3-10 times
+/// sparser across them) or as scattered samples.
+enum class ScanLines {
+  automatic,  ///< from the cloud (median elongation, narrow and wide normals disagreeing)
+  yes,
+  no
+};
+
 /// @brief What the data is like.
 struct SamplingOptions {
   /// A point whose nearest distinct neighbour is farther than outlier_factor local spacings
@@ -60,6 +68,11 @@ struct SamplingOptions {
   /// beyond the gap of the data, so the rim continues over the hole, while close sheets and
   /// creases, which have no rim, are left as the points say (docs/how-it-works.md).
   double hole_radius = -1.0;
+  /// 3D: scan lines or not. automatic decides on the whole cloud (docs/how-it-works.md: Scan
+  /// lines); yes or no for a cloud it misreads, such as a piece cut from a larger scan or a
+  /// scan merged with many scattered points. Read as scan lines, a point's spacing is at least
+  /// the gap to the next line (ReconstructionResult::scan_lines says how it was read).
+  ScanLines scan_lines = ScanLines::automatic;
 };
 
 /// @brief The adapted mesh (graded, isotropic, by Kuhn bisection).

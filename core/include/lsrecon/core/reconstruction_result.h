@@ -58,6 +58,7 @@ struct ReconstructionResult {
   /// sheets were closed (docs/how-it-works.md: Open sides), else 0
   Index open_side_points = 0;
   double noise = 0.0;               ///< estimated noise deviation of the data, input units
+  bool scan_lines = false;          ///< 3D: the cloud was read as scan lines (SamplingOptions::scan_lines)
   double time_step = 0.0, alpha = 0.0, curvature_weight = 0.0;  ///< the values used
   Index mesh_vertices = 0, mesh_simplices = 0;
   std::size_t input_points = 0, skipped_points = 0;  ///< skipped: NaN / infinite
