@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
 namespace lsr {
 namespace {
 
@@ -21,8 +23,8 @@ ScannerSettings test_scanner(bool from_above) {
   return s;
 }
 
-SurfaceTopology scan_topology(const std::string& shape, const ScannerSettings& settings) {
-  const SampledShape scan = simulate_scan(make_test_shape(shape), settings, 2011);
+SurfaceTopology scan_topology(const std::string& shape, const ScannerSettings& settings, std::uint64_t seed = 2011) {
+  const SampledShape scan = simulate_scan(make_test_shape(shape), settings, seed);
   const ReconstructionResult<3> r = reconstruct<3>(scan.points);
   return analyze_surface(r.surface.vertices, r.surface.facets);
 }
@@ -78,6 +80,21 @@ TEST(ScanReconstruction, UndersidesTheDiscsSpanAreClosedToo) {
   const SurfaceTopology spheres = scan_topology("two-spheres", s);
   EXPECT_TRUE(spheres.watertight);
   EXPECT_EQ(spheres.genus, (std::vector<int>{0, 0}));
+}
+
+// From above, a ring's inner wall below its equator is seen at grazing angles and reached by
+// the flood from both sides along paths of nearly equal length (through the hole and through
+// the unseen underside), so its side is a guess; the band held behind such walls filled the
+// torus's hole (genus 3 at this seed) and joined the linked rings by a web (genus 2 and 1).
+TEST(ScanReconstruction, AGrazingInnerWallSeenFromAboveLeavesTheHoleOpen) {
+  ScannerSettings s;
+  s.from_above = true;
+  const SurfaceTopology torus = scan_topology("torus", s, 2);
+  EXPECT_TRUE(torus.watertight);
+  EXPECT_EQ(torus.genus, std::vector<int>{1});
+  const SurfaceTopology rings = scan_topology("linked-rings", s, 2);
+  EXPECT_TRUE(rings.watertight);
+  EXPECT_EQ(rings.genus, (std::vector<int>{1, 1}));
 }
 
 }  // namespace

@@ -31,10 +31,19 @@ constexpr std::size_t kGateStride = 8;
 // nothing of which side is out: measured on a 20k torus with 4 holes (noise 0.25%), 2,030 of
 // the 2,052 points the path rule orients inwards lie below 0.2, and 6,443 of the 17,948 right ones.
 constexpr double kAmbiguousPaths = 0.2;
+// At least this share of the two-sided points with ambiguous paths: the paths tell no side
+// anywhere, as on a single view, whose sheet the flood reaches round its rim from both sides
+// alike (CGAL's hippo1 1.00, hippo2 0.94; scans from above with 6 views 0.20-0.72).
+constexpr double kSingleViewShare = 0.85;
 // The pocket's median winding number above which the data are closed up to holes: 1.017-1.033
 // on the i.i.d. corpus with 4 holes (11 shapes), 0.70-0.90 under open undersides (11 shapes
 // scanned from above), 0.53-0.78 on CGAL's single-view scans.
 constexpr double kClosedWinding = 0.95;
+
+// Whether a two-sided point's path lengths from the walls say nothing of which side is out.
+inline bool ambiguous_paths(double g_plus, double g_minus) {
+  return std::abs(g_plus - g_minus) < kAmbiguousPaths * (g_plus + g_minus);
+}
 
 // Which side of its nearest point a band vertex lies on: +1 / -1 along the normal, 0 when it
 // lies off the normal's axis (more than 60 degrees), where the side says nothing.
@@ -157,7 +166,7 @@ bool closed_up_to_holes(const SimplexMesh<D>& mesh, const Points<D>& points, con
   Points<D> oriented = outward;
   for (std::size_t p = 0; p < points.size(); ++p) {
     const bool both = g_plus[p] < kInf && g_minus[p] < kInf;
-    if (both && disc_sides[p] != 0 && std::abs(g_plus[p] - g_minus[p]) < kAmbiguousPaths * (g_plus[p] + g_minus[p])) {
+    if (both && disc_sides[p] != 0 && ambiguous_paths(g_plus[p], g_minus[p])) {
       oriented[p] = double(disc_sides[p]) * normals[p];
     }
   }
@@ -264,15 +273,22 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   }
   // Behind a two-sided sheet the front is held too: where no pocket closed (a thin part seen
   // from one side), the sheet stays a thin closed body instead of a shell the front pinches.
+  // Not behind points whose paths are ambiguous, unless nearly all are (a single view): their
+  // side is a guess, wrong on grazing walls next to an unseen side (the inner wall of a ring's
+  // hole), where the held band becomes a web across the hole.
   // The front is kept (not fitted) there and over the membrane: the pocket's surroundings
   // farther from the data than the band.
+  std::size_t guesses = 0;
+  for (std::size_t p = 0; p < np; ++p) guesses += g_plus[p] < kInf && g_minus[p] < kInf && ambiguous_paths(g_plus[p], g_minus[p]);
+  const bool single_view = double(guesses) >= kSingleViewShare * double(out.two_sided_points);
   out.held = pocket;
   const std::vector<char> near_pocket = near_any(mesh.vertices, pocket, (gap_factor + kBandWidth) * median(point_scale), threads);
   out.kept.assign(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     const auto p = std::size_t(nearest[v]);
     const bool in_band = dist[v] <= (gap_factor + kBandWidth) * vertex_scale[Eigen::Index(v)];
-    if (in_band && g_plus[p] < kInf && g_minus[p] < kInf && (mesh.vertices[v] - points[p]).dot(outward[p]) < 0.0) out.held[v] = 1;
+    const bool sided = g_plus[p] < kInf && g_minus[p] < kInf && (single_view || !ambiguous_paths(g_plus[p], g_minus[p]));
+    if (in_band && sided && (mesh.vertices[v] - points[p]).dot(outward[p]) < 0.0) out.held[v] = 1;
     out.kept[v] = out.held[v] || (near_pocket[v] && !in_band);
   }
   return out;

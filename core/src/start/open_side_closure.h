@@ -10,7 +10,8 @@
 /// open space, the other lies in a pocket entered round the sheet's rim), and the pocket is
 /// where the oriented points' winding number exceeds 1/2 (winding_number.h): under an open
 /// sheet, up to the disc spanning its rim. The pocket is taken from the flood; there and in the
-/// band behind two-sided points the front is held by curvature alone. A pocket inside data
+/// band behind two-sided points whose paths tell their side (all of them on a single view,
+/// where none do) the front is held by curvature alone. A pocket inside data
 /// closed up to holes (median winding number near 1) is left to the tangent discs, which span
 /// holes along the surface's curvature where the membrane is flat. Derivation and
 /// measurements: docs/how-it-works.md (Open sides).
@@ -31,7 +32,7 @@ namespace lsr::detail {
 struct OpenSides {
   Index two_sided_points = 0;  ///< data points the flood reached from both sides (0 when nothing was closed)
   Index seen_points = 0;       ///< data points the flood reached at all (0 when nothing was closed)
-  std::vector<char> held;      ///< #V: the pocket taken back from the flood and the band behind two-sided points:
+  std::vector<char> held;      ///< #V: the pocket taken back from the flood and the band behind sided points:
                                ///< no attraction (empty when nothing was closed)
   std::vector<char> kept;      ///< #V: held, or over the membrane: the front is kept, not fitted
 };
