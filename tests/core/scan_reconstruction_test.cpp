@@ -84,8 +84,8 @@ TEST(ScanReconstruction, UndersidesTheDiscsSpanAreClosedToo) {
 
 // From above, a ring's inner wall below its equator is seen at grazing angles and reached by
 // the flood from both sides along paths of nearly equal length (through the hole and through
-// the unseen underside), so its side is a guess; the band held behind such walls filled the
-// torus's hole (genus 3 at this seed) and joined the linked rings by a web (genus 2 and 1).
+// the unseen underside), so its side is a guess; the band held behind such walls left handles
+// in the torus's hole (genus 3 at this seed) and a web in a linked ring's (genus 2 and 1).
 TEST(ScanReconstruction, AGrazingInnerWallSeenFromAboveLeavesTheHoleOpen) {
   ScannerSettings s;
   s.from_above = true;
