@@ -12,6 +12,7 @@
 #include "mesh/data_metric.h"
 #include "sampling/residual_noise.h"
 #include "surface/facet_normals.h"
+#include "surface/rim_curvature_closure.h"
 #include "surface/unsupported_fairing.h"
 
 #include <algorithm>
@@ -26,18 +27,20 @@ namespace {
 constexpr double kUnsupported = 1.5;
 
 // The unsupported surface (over unseen sides, holes, cavities seen at grazing angles) is faired
-// (unsupported_fairing.h); returns the faired vertices (empty: none), which take their facets'
-// normals (the fit's there belong to another sheet). A faired vertex moves towards its
-// nearest sample by half its distance at most: a single view's back lies 1-2 scales behind
-// its front, and the fairing carried parts of it through the data (measured with a support
-// radius of one scale: hippo1's back showed through its body). The faired set grows from the
-// vertices past 1.5 scales over the surface's edges through those past one (hysteresis): the
-// rims of unseen parts, between one and 1.5 scales, are faired with them, while a vertex past
-// one scale in a gap of a well sampled surface is left alone (all vertices past one scale:
-// clean i.i.d. Hausdorff 1.63x).
+// (unsupported_fairing.h) and rounded to the curvature of its rim (rim_curvature_closure.h);
+// returns the vertices moved (empty: none), which take their facets' normals (the fit's there
+// belong to another sheet). A moved vertex comes towards its nearest sample by half its
+// distance at most: a single view's back lies 1-2 scales behind its front, and the fairing
+// carried parts of it through the data (measured with a support radius of one scale:
+// hippo1's back showed through its body). The set grows from the vertices past 1.5 scales
+// over the surface's edges through those past half a scale (hysteresis): the rims of unseen
+// parts are moved with them, down to the last seen rows of a tube's underside (from above,
+// the linked rings' flattened tube bottoms lay 2.5-3.6 spacings from the data, mostly within
+// 1.5 scales), while a vertex in a gap of a well sampled surface, with no vertex past 1.5
+// scales near, is left alone (all vertices past one scale: clean i.i.d. Hausdorff 1.63x).
 template <int D>
 std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
-  constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 1.0;
+  constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 0.5;
   LevelSetMesh<D>& s = r.surface;
   LargeVector<Index> nearest;
   data.query_k(s.vertices, 1, nearest, threads);
@@ -55,6 +58,9 @@ std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const Neare
   grow_over_edges(edges, free, loose);
   const Points<D> before = s.vertices;
   if (fair_unsupported(s, edges, free, kStep) == 0) return {};
+  Points<D> oriented = r.normals;  // the fit's, but where they point against the facets
+  set_facet_normals(s, {}, oriented);
+  round_to_rim_curvature(s, edges, free, oriented);
   for (std::size_t i = 0; i < free.size(); ++i) {
     if (!free[i]) continue;
     const double away = towards[i].norm(), closer = (s.vertices[i] - before[i]).dot(towards[i]) / away;
