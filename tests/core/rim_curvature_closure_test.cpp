@@ -36,22 +36,34 @@ LevelSetMesh<2> polygon(int n, double r) {
   return s;
 }
 
+// A regular polygon of n vertices on a circle of radius r, its exact normals, and the `count`
+// vertices after vertex `from` (mod n) flattened evenly onto the chord to the next one.
+struct FlattenedPolygon {
+  LevelSetMesh<2> s;
+  Points<2> normals;
+  std::vector<char> free;
+};
+
+FlattenedPolygon flattened_polygon(int n, double r, int from, int count) {
+  FlattenedPolygon p{polygon(n, r), Points<2>(std::size_t(n)), std::vector<char>(std::size_t(n), 0)};
+  for (std::size_t v = 0; v < p.normals.size(); ++v) p.normals[v] = p.s.vertices[v].normalized();
+  const Vec<2> a = p.s.vertices[std::size_t(from)], b = p.s.vertices[std::size_t((from + count + 1) % n)];
+  for (int k = 1; k <= count; ++k) {
+    const auto v = std::size_t((from + k) % n);
+    p.free[v] = 1;
+    p.s.vertices[v] = a + double(k) / double(count + 1) * (b - a);
+  }
+  return p;
+}
+
 TEST(RimCurvatureClosure, AFlattenedArcOfARegularPolygonComesBackOntoItsCircle) {
   const int n = 64;
   const double r = 2.0;
-  LevelSetMesh<2> s = polygon(n, r);
-  Points<2> normals(s.vertices.size());
-  for (std::size_t v = 0; v < normals.size(); ++v) normals[v] = s.vertices[v].normalized();
   // Vertices 43 .. 58 (242 .. 326 degrees) flattened onto the chord between 42 and 59.
-  std::vector<char> free(s.vertices.size(), 0);
   const int first = 43, last = 58;
-  const Vec<2> a = s.vertices[first - 1], b = s.vertices[last + 1];
+  auto [s, normals, free] = flattened_polygon(n, r, first - 1, last - first + 1);
   double depth = 0.0;
-  for (int i = first; i <= last; ++i) {
-    free[std::size_t(i)] = 1;
-    s.vertices[std::size_t(i)] = a + double(i - first + 1) / double(last - first + 2) * (b - a);
-    depth = std::max(depth, r - s.vertices[std::size_t(i)].norm());
-  }
+  for (int i = first; i <= last; ++i) depth = std::max(depth, r - s.vertices[std::size_t(i)].norm());
   const RimClosure c = round_to_rim_curvature(s, edge_graph(s), free, normals);
   EXPECT_EQ(c.rounded, std::size_t(last - first + 1));
   EXPECT_EQ(c.kept, 0u);
@@ -161,22 +173,13 @@ TEST(RimCurvatureClosure, AFlatBottomBetweenRoundedCornersStaysFlat) {
 TEST(RimCurvatureClosure, MoreThanHalfACircleUnseenClosesByTheNearerArc) {
   const int n = 96;
   const double r = 2.0;
-  LevelSetMesh<2> s = polygon(n, r);
-  Points<2> normals(s.vertices.size());
-  for (std::size_t v = 0; v < normals.size(); ++v) normals[v] = s.vertices[v].normalized();
   // Vertices 41 .. 95 and 0 .. 7 (the 240 degrees from 150 to 30 through the bottom) flattened
   // onto the chord between 40 and 8, at y = r sin(30) = 1.
-  std::vector<char> free(s.vertices.size(), 0);
-  const Vec<2> a = s.vertices[40], b = s.vertices[8];
   const int count = 63;
-  double depth = 0.5 * r;
-  for (int k = 1; k <= count; ++k) {
-    const std::size_t v = std::size_t((40 + k) % n);
-    free[v] = 1;
-    s.vertices[v] = a + double(k) / double(count + 1) * (b - a);
-  }
+  const double depth = 0.5 * r;
+  auto [s, normals, free] = flattened_polygon(n, r, 40, count);
   const RimClosure c = round_to_rim_curvature(s, edge_graph(s), free, normals);
-  EXPECT_EQ(c.rounded, std::size_t(count)) << c.iterations;
+  EXPECT_EQ(c.rounded, std::size_t(count));
   const Vec<2> mirrored_centre(0.0, 2.0 * r * 0.5);
   for (int k = 1; k <= count; ++k) {
     const Vec<2>& x = s.vertices[std::size_t((40 + k) % n)];
