@@ -7,6 +7,7 @@
 #include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
 #include "fit/mesh_resolution_sample.h"
+#include "fit/rim_normals.h"
 #include "fit/sheet_gaps.h"
 #include "fit/surface_refinement.h"
 #include "mesh/data_metric.h"
@@ -25,6 +26,32 @@ namespace {
 // sample supports the surface: there the fit extrapolates and the front is held by curvature
 // alone (so attach_fit's merge may join there too).
 constexpr double kUnsupported = 1.5;
+
+// At the rim of the unsupported surface (its fixed vertices next to a free one) the fit's
+// normals lean towards the flattened part: from above, 10-15 degrees on average on the sphere's
+// and the linked rings' rims, which the balance of rim_curvature_closure.h turns into a mean
+// curvature 0.8x the tube's. A quadric height field over the rim vertex's nearest data, wide
+// enough to span several scan rows, extrapolates within 1-3 degrees (rim_normals.h).
+template <int D>
+void take_rim_normals_from_data(const LevelSetMesh<D>& s, const EdgeGraph& edges, const std::vector<char>& free,
+                                const NearestPointIndex<D>& data, Points<D>& normals, int threads) {
+  std::vector<std::size_t> rim;
+  Points<D> at;
+  for (std::size_t v = 0; v < free.size(); ++v) {
+    if (free[v]) continue;
+    for (std::size_t k = edges.first[v]; k < edges.first[v + 1]; ++k) {
+      if (!free[std::size_t(edges.next[k])]) continue;
+      rim.push_back(v);
+      at.push_back(s.vertices[v]);
+      break;
+    }
+  }
+  const Points<D> n = rim_normals(data, at, threads);
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    Vec<D>& to = normals[rim[i]];
+    if (n[i].squaredNorm() > 0.0) to = n[i].dot(to) < 0.0 ? Vec<D>(-n[i]) : n[i];
+  }
+}
 
 // The unsupported surface (over unseen sides, holes, cavities seen at grazing angles) is faired
 // (unsupported_fairing.h) and rounded to the curvature of its rim (rim_curvature_closure.h);
@@ -60,6 +87,7 @@ std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const Neare
   if (fair_unsupported(s, edges, free, kStep) == 0) return {};
   Points<D> oriented = r.normals;  // the fit's, but where they point against the facets
   set_facet_normals(s, {}, oriented);
+  take_rim_normals_from_data(s, edges, free, data, oriented, threads);
   round_to_rim_curvature(s, edges, free, oriented);
   for (std::size_t i = 0; i < free.size(); ++i) {
     if (!free[i]) continue;
