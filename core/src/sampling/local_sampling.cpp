@@ -32,51 +32,6 @@ double kth_distinct_distance(const Points<D>& p, const Index* nearest, int k, st
   return last;
 }
 
-template <int D>
-void pca(const Points<D>& p, const Index* nearest, int k, double& thickness, Vec<D>& normal, double* elongation = nullptr) {
-  Vec<D> mean = Vec<D>::Zero();
-  for (int j = 0; j < k; ++j) mean += p[nearest[j]];
-  mean /= double(k);
-  Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
-  for (int j = 0; j < k; ++j) {
-    const Vec<D> e = p[nearest[j]] - mean;
-    cov += e * e.transpose() / double(k);
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> eig(cov);
-  thickness = std::sqrt(std::max(0.0, eig.eigenvalues()[0]));
-  normal = eig.eigenvectors().col(0);
-  // The second largest spread over the largest: near 0 when the neighbours lie along a line.
-  if (elongation) *elongation = eig.eigenvalues()[D - 1] > 0.0 ? eig.eigenvalues()[D - 2] / eig.eigenvalues()[D - 1] : 1.0;
-}
-
-// A quadric height field fitted by least squares to the neighbours in the tangent frame of p_i
-// (zero if the fit is degenerate: duplicates, colinear points).
-template <int D>
-HeightField<D> fit_height_field(const Points<D>& p, const Index* nearest, int k, std::size_t i, const Vec<D>& normal) {
-  constexpr int kTerms = HeightField<D>::kTerms;
-  HeightField<D> f;
-  const Eigen::Matrix<double, D, D> frame = tangent_frame(normal);
-  // Normal equations (a 6x6 solve per point, cheap next to the k-NN query), in units of the
-  // neighbourhood's radius so that they stay well conditioned.
-  const double radius = (p[nearest[k - 1]] - p[i]).norm();
-  if (!(radius > 0.0)) return f;
-  Eigen::Matrix<double, kTerms, kTerms> ata = Eigen::Matrix<double, kTerms, kTerms>::Zero();
-  Eigen::Matrix<double, kTerms, 1> ath = Eigen::Matrix<double, kTerms, 1>::Zero();
-  for (int j = 0; j < k; ++j) {
-    const Vec<D> y = frame * (p[nearest[j]] - p[i]) / radius;
-    const Eigen::Matrix<double, kTerms, 1> row = HeightField<D>::monomials(y.template head<D - 1>());
-    ata += row * row.transpose();
-    ath += row * y[D - 1];
-  }
-  Eigen::Matrix<double, kTerms, 1> c = ata.ldlt().solve(ath);
-  if (!c.allFinite()) return f;
-  // Back to lengths: the constant scales by r, the slopes not, the second derivatives by 1/r.
-  c[0] *= radius;
-  c.template tail<kTerms - D>() /= radius;
-  for (int t = 0; t < kTerms; ++t) f.coefficients[std::size_t(t)] = c[t];
-  return f;
-}
-
 // The widest angle, around p_i in its tangent plane, free of (distinct) neighbours: about pi
 // or more on the rim of a hole or at the border of a scan, where the neighbours all lie on one
 // side; 2 pi / (k - 1) on average inside. In 2D: pi at the end of a curve (all on one side),
@@ -386,7 +341,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(t)
     for (long r = 0; r < n; ++r) {
       const std::size_t i = first + std::size_t(r);
-      if (all || s.rim[i]) s.height_fields[i] = fit_height_field(p, &neighbours[std::size_t(r) * k], k, i, s.normals[i]);
+      if (all || s.rim[i]) s.height_fields[i] = fit_height_field(p, &neighbours[std::size_t(r) * k], k, p[i], s.normals[i], (p[std::size_t(neighbours[std::size_t(r) * k + k - 1])] - p[i]).norm());
     }
     tiles.share(s.height_fields);
   }

@@ -43,6 +43,18 @@ struct HeightField {
   double largest_curvature() const;
 };
 
+/// @brief PCA of the k points `nearest` of p: the unit normal (least spread), the thickness (the
+/// deviation along it) and, if asked, the elongation (second largest spread over the largest).
+template <int D>
+void pca(const Points<D>& p, const Index* nearest, int k, double& thickness, Vec<D>& normal, double* elongation = nullptr);
+
+/// @brief The HeightField fitted by least squares to the k points `nearest` of p over the
+/// tangent_frame of `normal` with its origin at `origin` (zero if degenerate: duplicates,
+/// colinear points); `radius`, the neighbourhood's, scales the normal equations.
+template <int D>
+HeightField<D> fit_height_field(const Points<D>& p, const Index* nearest, int k, const Vec<D>& origin, const Vec<D>& normal,
+                                double radius);
+
 /// @brief Sampling scales per data point (all #N, lengths in the points' units).
 template <int D>
 struct LocalSampling {
