@@ -12,7 +12,9 @@
 /// of radius c spacing is empty with probability exp(-6 c^2): the largest empty disc among
 /// 2e5 random points has c ~ 1.45, while the nearest-neighbour distance (0.5 / sqrt(rho)) is
 /// 2.8x smaller than the spacing. The raw values are median-filtered over the neighbourhood so
-/// that one isolated or clustered point does not set its own scale.
+/// that one isolated or clustered point does not set its own scale. On a curve random gaps are
+/// far wider (the largest of n about ln n mean gaps): there the spacing is at least the
+/// half-width of the widest gap between neighbours over kHoleToSpacing (local_sampling.cpp).
 #pragma once
 
 #include "geometry/nearest_point_index.h"
