@@ -244,6 +244,38 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
   return double(tiles.sum(disagree)) > LocalSampling<D>::kScanLineDisagreement * double(probed);
 }
 
+// Calls at(i, its kHoleNeighbours nearest) for each of this worker's points, holding one tile's
+// neighbour lists at a time.
+template <int D, class AtPoint>
+void over_wide_neighbourhoods(const NearestPointIndex<D>& data, int threads, const Progress& progress, const TileRuns& tiles,
+                              const AtPoint& at) {
+  constexpr int wide = LocalSampling<D>::kHoleNeighbours;
+  const Points<D>& p = data.points();
+  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
+    progress.update("sampling", -1.0);
+    const std::size_t first = tiles.cuts[tile];
+    Points<D> copy;
+    LargeVector<Index> nearest;
+    data.query_k(run_of(p, first, tiles.cuts[tile + 1], copy), wide, nearest, threads);
+    const long n = long(tiles.cuts[tile + 1] - first);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (long r = 0; r < n; ++r) at(first + std::size_t(r), &nearest[std::size_t(r) * wide]);
+  }
+}
+
+// The spacing is at least the radius of the holes in the sample (median-filtered) over
+// kHoleToSpacing.
+template <int D>
+void raise_spacing_to_holes(std::vector<double>& hole, const LargeVector<Index>& neighbours, int k, int threads,
+                            const TileRuns& tiles, LocalSampling<D>& s) {
+  tiles.share(hole);
+  std::vector<double> filtered;
+  neighbourhood_median(hole, neighbours, k, tiles.first(), filtered, threads);
+  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
+    s.spacing[i] = std::max(s.spacing[i], filtered[i] / LocalSampling<D>::kHoleToSpacing);
+  }
+}
+
 template <int D>
 void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Index>& neighbours, int k, int threads,
                          std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress,
@@ -258,30 +290,14 @@ void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Ind
   }
   s.scan_lines = true;
   std::vector<double> hole(p.size()), noise(p.size());
-  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
-    progress.update("sampling", -1.0);
-    const std::size_t first = tiles.cuts[tile];
-    Points<D> copy;
-    LargeVector<Index> nearest;
-    data.query_k(run_of(p, first, tiles.cuts[tile + 1], copy), wide, nearest, threads);
-    const long n = long(tiles.cuts[tile + 1] - first);
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (long r = 0; r < n; ++r) {
-      const std::size_t i = first + std::size_t(r);
-      const Index* around = &nearest[std::size_t(r) * wide];
-      pca(p, around, wide, noise[i], s.normals[i]);
-      hole[i] = empty_disc_radius(p, around, wide, i, s.normals[i]);
-    }
-  }
+  over_wide_neighbourhoods(data, threads, progress, tiles, [&](std::size_t i, const Index* around) {
+    pca(p, around, wide, noise[i], s.normals[i]);
+    hole[i] = empty_disc_radius(p, around, wide, i, s.normals[i]);
+  });
   progress.update("sampling", -1.0);
   tiles.share(noise);
-  tiles.share(hole);
   neighbourhood_median(noise, neighbours, k, tiles.first(), s.noise, threads);
-  std::vector<double> filtered;
-  neighbourhood_median(hole, neighbours, k, tiles.first(), filtered, threads);
-  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
-    s.spacing[i] = std::max(s.spacing[i], filtered[i] / LocalSampling<D>::kHoleToSpacing);
-  }
+  raise_spacing_to_holes(hole, neighbours, k, threads, tiles, s);
 }
 
 // On a curve (2D) the gaps between random samples are exponential: the largest of n is about
@@ -315,25 +331,10 @@ void widen_across_curve_gaps(const NearestPointIndex<2>& data, const LargeVector
   const Points<2>& p = data.points();
   if (p.size() < std::size_t(wide)) return;
   std::vector<double> half_gap(p.size());
-  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
-    progress.update("sampling", -1.0);
-    const std::size_t first = tiles.cuts[tile];
-    Points<2> copy;
-    LargeVector<Index> nearest;
-    data.query_k(run_of(p, first, tiles.cuts[tile + 1], copy), wide, nearest, threads);
-    const long n = long(tiles.cuts[tile + 1] - first);
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (long r = 0; r < n; ++r) {
-      const std::size_t i = first + std::size_t(r);
-      half_gap[i] = 0.5 * widest_gap_between(p, &nearest[std::size_t(r) * wide], wide, i, s.normals[i]);
-    }
-  }
-  tiles.share(half_gap);
-  std::vector<double> filtered;
-  neighbourhood_median(half_gap, neighbours, k, tiles.first(), filtered, threads);
-  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
-    s.spacing[i] = std::max(s.spacing[i], filtered[i] / LocalSampling<2>::kHoleToSpacing);
-  }
+  over_wide_neighbourhoods(data, threads, progress, tiles, [&](std::size_t i, const Index* around) {
+    half_gap[i] = 0.5 * widest_gap_between(p, around, wide, i, s.normals[i]);
+  });
+  raise_spacing_to_holes(half_gap, neighbours, k, threads, tiles, s);
 }
 
 }  // namespace
