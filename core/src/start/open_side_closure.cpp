@@ -4,6 +4,7 @@
 
 #include "mesh/vertices_near.h"
 #include "start/outside_flood_fill.h"
+#include "start/normal_propagation.h"
 #include "start/winding_number.h"
 
 #include "sampling/local_sampling.h"
@@ -39,6 +40,14 @@ constexpr double kSingleViewShare = 0.85;
 // on the i.i.d. corpus with 4 holes (11 shapes), 0.70-0.90 under open undersides (11 shapes
 // scanned from above), 0.53-0.78 on CGAL's single-view scans.
 constexpr double kClosedWinding = 0.95;
+// The pocket's winding number on a single view. A view sees the half of a body that faces it,
+// which covers less than half of the directions from the body's unseen half: {w > 1/2} ends at
+// the disc spanning the view's rim, and gaps in the view cut it into pieces (CGAL's hippo1:
+// 3 parts). From the far pole of a sphere seen from one side, the seen half covers the cone
+// of 45 degrees round the axis, (1 - cos 45 deg) / 2 = 0.1464 of the directions, and more from
+// every other point of the ball: {w > 0.1464} is the whole ball. Measured on half of a 2:1:1
+// ellipsoid seen from its side, cut by a gap: 1.09 times the ellipsoid's volume.
+constexpr double kSingleViewWinding = 0.1464;
 
 // Whether a two-sided point's path lengths from the walls say nothing of which side is out.
 inline bool ambiguous_paths(double g_plus, double g_minus) {
@@ -53,6 +62,26 @@ int side_of(const Vec<D>& x, const Vec<D>& p, const Vec<D>& n) {
   const double c = e.dot(n), r = e.norm();
   if (r == 0.0 || std::abs(c) < 0.5 * r) return 0;
   return c > 0.0 ? 1 : -1;
+}
+
+// On a single view the paths tell no side, and the shorter one flips the senses at random along
+// the sheet (hippo1: 71% agree with the normals the file carries). There the senses follow
+// the normals' smoothest paths instead (normal_propagation.h; hippo1: 89% agree), each tree's
+// overall sense the paths' vote, weighted by how much they differ.
+template <int D>
+void propagate_single_view_senses(const Points<D>& normals, const LargeVector<Index>& knn, const std::vector<double>& g_plus,
+                                  const std::vector<double>& g_minus, std::vector<signed char>& sense) {
+  const PropagatedSenses tree = propagate_senses<D>(normals, knn, kSideNeighbours);
+  std::vector<double> vote(std::size_t(tree.parts), 0.0);
+  for (std::size_t p = 0; p < normals.size(); ++p) {
+    const double a = g_plus[p], b = g_minus[p];
+    if (a == kInf && b == kInf) continue;
+    const double weight = a == kInf || b == kInf ? 1.0 : std::abs(a - b) / (a + b);
+    vote[std::size_t(tree.part[p])] += weight * (a <= b ? 1.0 : -1.0) * tree.sense[p];
+  }
+  for (std::size_t p = 0; p < normals.size(); ++p) {
+    sense[p] = static_cast<signed char>(vote[std::size_t(tree.part[p])] >= 0.0 ? tree.sense[p] : -tree.sense[p]);
+  }
 }
 
 // Path length from the walls through the reached vertices (Dijkstra on the mesh's edges).
@@ -250,6 +279,10 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
     }
     if (!changed) break;
   }
+  std::size_t guesses = 0;
+  for (std::size_t p = 0; p < np; ++p) guesses += g_plus[p] < kInf && g_minus[p] < kInf && ambiguous_paths(g_plus[p], g_minus[p]);
+  const bool single_view = double(guesses) >= kSingleViewShare * double(out.two_sided_points);
+  if (single_view) propagate_single_view_senses(normals, knn, g_plus, g_minus, sense);
   Points<D> outward(np);
   std::vector<double> area(np);
   for (std::size_t p = 0; p < np; ++p) {
@@ -261,12 +294,14 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
     out.seen_points = out.two_sided_points = 0;
     return out;
   }
-  // The pocket: what the flood reached where the oriented data wind around it more than half.
+  // The pocket: what the flood reached where the oriented data wind around it more than half
+  // (on a single view, more than the far side of a ball seen from one side).
   const WindingNumber winding(points, outward, area);
+  const double pocket_winding = single_view ? kSingleViewWinding : 0.5;
   std::vector<char> pocket(nv, 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(nv); ++v) {
-    if (reached[std::size_t(v)]) pocket[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]) > 0.5;
+    if (reached[std::size_t(v)]) pocket[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]) > pocket_winding;
   }
   for (std::size_t v = 0; v < nv; ++v) {
     if (pocket[v]) reached[v] = 0;
@@ -277,12 +312,15 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   // side is a guess, wrong on grazing walls next to an unseen side (the inner wall of a ring's
   // hole), where the held band becomes a web across the hole.
   // The front is kept (not fitted) there and over the membrane: the pocket's surroundings
-  // farther from the data than the band.
-  std::size_t guesses = 0;
-  for (std::size_t p = 0; p < np; ++p) guesses += g_plus[p] < kInf && g_minus[p] < kInf && ambiguous_paths(g_plus[p], g_minus[p]);
-  const bool single_view = double(guesses) >= kSingleViewShare * double(out.two_sided_points);
+  // farther from the data than the band, and its vertices' neighbours (far from the data the
+  // mesh's edges outgrow that radius, and a front crossing one out of the pocket lay beyond it:
+  // the stopping test counted it as front far from the data, "not converged").
   out.held = pocket;
-  const std::vector<char> near_pocket = near_any(mesh.vertices, pocket, (gap_factor + kBandWidth) * median(point_scale), threads);
+  std::vector<char> near_pocket = near_any(mesh.vertices, pocket, (gap_factor + kBandWidth) * median(point_scale), threads);
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!pocket[v]) continue;
+    for (Index k = neighbours.offsets[v]; k < neighbours.offsets[v + 1]; ++k) near_pocket[std::size_t(neighbours.neighbours[std::size_t(k)])] = 1;
+  }
   out.kept.assign(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     const auto p = std::size_t(nearest[v]);

@@ -9,7 +9,10 @@
 /// reached both, the one it reached by the shorter path from the walls: the seen side faces the
 /// open space, the other lies in a pocket entered round the sheet's rim), and the pocket is
 /// where the oriented points' winding number exceeds 1/2 (winding_number.h): under an open
-/// sheet, up to the disc spanning its rim. The pocket is taken from the flood; there and in the
+/// sheet, up to the disc spanning its rim. On a single view, where no path tells a side, the
+/// senses are propagated along the sheet (normal_propagation.h) and the pocket is where w
+/// exceeds its value at the far pole of a ball seen from one side (0.146): the unseen half of
+/// the body, across the view's gaps. The pocket is taken from the flood; there and in the
 /// band behind two-sided points whose paths tell their side (all of them on a single view,
 /// where none do) the front is held by curvature alone. A pocket inside data
 /// closed up to holes (median winding number near 1) is left to the tangent discs, which span

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file open_side_closure_test.cpp
 /// @brief The winding number of oriented samples on analytic surfaces, the closure of a dome
-/// seen from one side into a closed body, and small holes in closed data left to the discs.
+/// seen from one side into a closed body, a single view cut by a gap into one body, and small
+/// holes in closed data left to the discs.
 #include "start/winding_number.h"
 
 #include "lsrecon/core/level_set_reconstruction.h"
@@ -70,6 +71,30 @@ TEST(OpenSideClosure, ADomeSeenFromOneSideClosesIntoABody) {
   EXPECT_EQ(t.genus, std::vector<int>{0});
   EXPECT_GT(enclosed_volume(r.surface), 0.5 * (2.0 / 3.0) * kPi);
   EXPECT_GT(r.open_side_points, 0);
+}
+
+// A single view cut by a gap, as scanners leave them (CGAL's hippos): the half of a 2:1:1
+// ellipsoid facing -y, without the band |x| < 0.4 across it. The paths from the walls tell no
+// side of such a sheet; the winding number of its senses propagated along the sheet exceeds
+// the far pole of a ball seen from one side (0.146) throughout a body at least as elongated
+// as a ball, which makes one body of both pieces. The old pocket ended at the discs spanning
+// each piece's rim: 2 parts, each at most its piece's seen half. So: one body of genus 0, more
+// than 3/4 of the ellipsoid's volume (the seen halves hold 1/2), and less than 1.86 times it
+// (behind a long cylinder's seen half, w = 0.146 bounds a segment of 4.28 R^2 against its
+// half disc's 1.57 R^2: the most a closure of this rule can bulge).
+TEST(OpenSideClosure, ASingleViewCutByAGapClosesIntoOneBody) {
+  Points<3> view;
+  for (const Vec<3>& p : sphere_points(30000)) {
+    if (p.y() < 0.0 && std::abs(2.0 * p.x()) > 0.4) view.emplace_back(2.0 * p.x(), p.y(), p.z());
+  }
+  const ReconstructionResult<3> r = reconstruct<3>(view);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
+  EXPECT_TRUE(t.watertight);
+  EXPECT_EQ(t.genus, std::vector<int>{0});
+  const double ellipsoid = 4.0 / 3.0 * kPi * 2.0;
+  EXPECT_GT(enclosed_volume(r.surface), 0.75 * ellipsoid);
+  EXPECT_LT(enclosed_volume(r.surface), 1.86 * ellipsoid);
 }
 
 // Closed data are left as they were: the flood reaches every point from outside only.

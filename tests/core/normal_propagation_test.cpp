@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file normal_propagation_test.cpp
+/// @brief Senses propagated along the normals' smoothest paths: consistent on a closed sphere
+/// whose normals were flipped at random, one tree per separate piece.
+#include "start/normal_propagation.h"
+
+#include "geometry/nearest_point_index.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace lsr::detail {
+namespace {
+
+// n Fibonacci points of a sphere of radius r at c, and their outward normals.
+void sphere(int n, double r, const Vec<3>& c, Points<3>& p, Points<3>& normals) {
+  const double golden = kPi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / n, s = std::sqrt(1.0 - z * z);
+    const Vec<3> u(s * std::cos(golden * i), s * std::sin(golden * i), z);
+    p.push_back(c + r * u);
+    normals.push_back(u);
+  }
+}
+
+constexpr int kNeighbours = 16;
+
+PropagatedSenses propagate(const Points<3>& p, const Points<3>& normals) {
+  const NearestPointIndex<3> index(p);
+  LargeVector<Index> knn;
+  index.query_k(p, kNeighbours, knn);
+  return propagate_senses<3>(normals, knn, kNeighbours);
+}
+
+// Every third normal flipped (and one in seven more): after propagation each normal times its
+// sense points the same way out of the sphere, outwards for all or inwards for all.
+TEST(NormalPropagation, FlippedNormalsOfASphereComeOutConsistent) {
+  Points<3> p, outward;
+  sphere(3000, 1.0, Vec<3>::Zero(), p, outward);
+  Points<3> flipped = outward;
+  for (std::size_t i = 0; i < flipped.size(); ++i) {
+    if (i % 3 == 0 || i % 7 == 0) flipped[i] = -flipped[i];
+  }
+  const PropagatedSenses s = propagate(p, flipped);
+  ASSERT_EQ(s.parts, 1);
+  const double first = s.sense[0] * flipped[0].dot(outward[0]);
+  for (std::size_t i = 0; i < p.size(); ++i) ASSERT_GT(s.sense[i] * flipped[i].dot(outward[i]) * first, 0.0) << i;
+}
+
+// Two spheres far apart (no point's 16 nearest reach across): two trees, each consistent.
+TEST(NormalPropagation, SeparatePiecesAreSeparateTrees) {
+  Points<3> p, outward;
+  sphere(1000, 1.0, Vec<3>::Zero(), p, outward);
+  sphere(1000, 1.0, Vec<3>(5, 0, 0), p, outward);
+  Points<3> flipped = outward;
+  for (std::size_t i = 0; i < flipped.size(); i += 2) flipped[i] = -flipped[i];
+  const PropagatedSenses s = propagate(p, flipped);
+  ASSERT_EQ(s.parts, 2);
+  for (const std::size_t first : {std::size_t(0), std::size_t(1000)}) {
+    const double sign = s.sense[first] * flipped[first].dot(outward[first]);
+    for (std::size_t i = first; i < first + 1000; ++i) {
+      ASSERT_EQ(s.part[i], s.part[first]);
+      ASSERT_GT(s.sense[i] * flipped[i].dot(outward[i]) * sign, 0.0) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lsr::detail
