@@ -80,8 +80,8 @@ TEST(OpenSideClosure, ADomeSeenFromOneSideClosesIntoABody) {
 // as a ball, which makes one body of both pieces. The old pocket ended at the discs spanning
 // each piece's rim: 2 parts, each at most its piece's seen half. So: one body of genus 0, more
 // than 3/4 of the ellipsoid's volume (the seen halves hold 1/2), and less than 1.86 times it
-// (behind a long cylinder's seen half, w = 0.146 bounds a segment of 4.28 R^2 against its
-// half disc's 1.57 R^2: the most a closure of this rule can bulge).
+// (an ellipsoid lies between a ball, closed exactly, and a long cylinder, behind whose seen
+// half w = 0.146 bounds a segment of 4.28 R^2 against its half disc's 1.57 R^2).
 TEST(OpenSideClosure, ASingleViewCutByAGapClosesIntoOneBody) {
   Points<3> view;
   for (const Vec<3>& p : sphere_points(30000)) {
