@@ -304,10 +304,12 @@ void write_markdown(const std::string& path, const std::vector<std::string>& row
        << " x diagonal per view, seed " << s.seed << ".\n";
     return;
   }
-  md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
-     << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
-     << s.variant.density_ratio << ", seed " << s.seed << ". Seconds include normal estimation for the methods "
-     << "that need normals (PCA of 16 neighbours, oriented away from the centroid).\n";
+  if (s.input.empty())
+    md << "\nPoints per case: " << s.points << " i.i.d. area-uniform, noise " << s.variant.noise << " x diagonal, "
+       << s.variant.holes << " holes of radius " << s.variant.hole_radius << " x diagonal, density ratio "
+       << s.variant.density_ratio << ", seed " << s.seed << ".";
+  md << "\nSeconds include normal estimation for the methods that need normals (PCA of 16 neighbours, oriented "
+     << "away from the centroid).\n";
 }
 
 // Every option once; the defaults are Settings'.
