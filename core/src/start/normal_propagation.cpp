@@ -65,7 +65,6 @@ PropagatedSenses propagate_senses(const Points<D>& normals, const LargeVector<In
   return out;
 }
 
-template PropagatedSenses propagate_senses<2>(const Points<2>&, const LargeVector<Index>&, int);
 template PropagatedSenses propagate_senses<3>(const Points<3>&, const LargeVector<Index>&, int);
 
 }  // namespace lsr::detail
