@@ -131,7 +131,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.sampling.gap_factor, hole_radius, rims_only, o.limits.threads);
   const OpenSideInputs<D> open{data, sampling.normals, point_scale, dist, at_vertex.nearest};
   const StartField<D> start = start_field(mesh, neighbours, data, sampling, attract.d, at_vertex.distance, dist, scale, o, hole_radius,
-                                          settings.schedule.band, r.h_min, custom_start, box, D == 3 ? &open : nullptr);
+                                          settings.schedule.band, r.h_min, custom_start, box, &open);
   r.sealed_cavities = start.sealed_cavities;
   r.open_side_points = start.held.empty() ? 0 : start.open_side_points;
   r.tagged_start = start.tagged;

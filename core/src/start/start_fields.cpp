@@ -3,6 +3,7 @@
 #include "start/start_fields.h"
 
 #include "mesh/vertices_near.h"
+#include "start/nested_outsides.h"
 #include "start/open_side_closure.h"
 
 #include "evolution/renormalization.h"
@@ -91,10 +92,15 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
                   (edge_guard.empty() || attraction[v] > std::min(edge_guard[v], distance[v] - gap));
   }
   std::vector<char> reached = flood_from_walls(mesh, passable);
+  const std::vector<char> nested =
+      open ? nested_outsides(mesh, neighbours, passable, reached, open->data.points(), open->normals, open->nearest)
+           : std::vector<char>(n, 0);
   sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
   if constexpr (D == 3) {
     if (open) find_open_sides(mesh, neighbours, distance, scale, gap_factor, !edge_guard.empty(), *open, reached, closed, threads);
   }
+  // Last: sealing would take them back, and the open sides' paths run from the walls.
+  for (std::size_t v = 0; v < n; ++v) reached[v] = reached[v] || nested[v];
   return flood_distance(mesh, neighbours, reached, band, threads);
 }
 

@@ -33,7 +33,8 @@ template <int D>
 Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const std::vector<char>& flooded,
                                double band, int threads);
 
-// What the open-side closure needs besides the flood (open_side_closure.h).
+// What the open-side closure (open_side_closure.h, 3D) and the nested outsides
+// (nested_outsides.h) need besides the flood.
 template <int D>
 struct OpenSideInputs {
   const NearestPointIndex<D>& data;
@@ -50,8 +51,9 @@ struct OpenSideInputs {
 // without discs), so that no edge jumps the discs' plane; "over a hole" meaning the discs are
 // nearer than the points by more than the gap, so that a coarse mesh over sampled parts does not
 // push the start out. Cavities entered through an opening narrower than `seal_radius` are given
-// back (cavity_sealing.h; `sealed`), and with `open` the pockets behind open sheets
-// (open_side_closure.h; `closed`). Empty when nothing is reachable (data against the walls).
+// back (cavity_sealing.h; `sealed`), and with `open` the pockets behind open sheets too
+// (open_side_closure.h; `closed`), while the outsides nested in the data join the flood
+// (nested_outsides.h). Empty when nothing is reachable (data against the walls).
 template <int D>
 Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& attraction,
                              const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,
