@@ -7,6 +7,7 @@
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
+#include "mesh/adaptive_refinement.h"
 #include "mesh/kuhn_bisection.h"
 #include "start/outside_flood_fill.h"
 #include "surface/surface_topology.h"
@@ -21,17 +22,6 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 
-SimplexMesh<3> uniform_mesh(int cells) {
-  KuhnBisectionForest<3> forest(cells);
-  forest.finish_refinement();
-  SimplexMesh<3> mesh;
-  mesh.vertices = forest.vertices();
-  for (Index s = 0; s < Index(forest.simplices().size()); ++s) {
-    if (forest.is_leaf(s)) mesh.simplices.push_back(forest.simplices()[s].v);
-  }
-  return mesh;
-}
-
 // Data on spheres round the box's centre, with radial normals (either sense: unoriented),
 // and the free vertices: farther than `gap` from the data.
 struct Shells {
@@ -40,7 +30,8 @@ struct Shells {
   Points<3> points, normals;
   std::vector<Index> nearest;
   std::vector<char> passable, reached;
-  Shells(int cells, const std::vector<double>& radii, double gap) : mesh(uniform_mesh(cells)), neighbours(vertex_neighbours(mesh)) {
+  Shells(int cells, const std::vector<double>& radii, double gap)
+      : mesh(leaf_mesh(KuhnBisectionForest<3>(cells)).mesh), neighbours(vertex_neighbours(mesh)) {
     for (std::size_t k = 0; k < radii.size(); ++k) {
       for (const auto& x : Sphere{Vec<3>::Zero(), radii[k]}.sample(int(4000 * radii[k] * radii[k] / 0.04))) {
         points.push_back(x + Vec<3>::Constant(0.5));

@@ -30,7 +30,9 @@ std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighb
   for (std::size_t v = 0; v < nv; ++v) {
     if (region[v] < 0) continue;
     bool edge = false;
-    for (Index k = neighbours.offsets[v]; k < neighbours.offsets[v + 1] && !edge; ++k) edge = !passable[std::size_t(neighbours.neighbours[std::size_t(k)])];
+    for (Index k = neighbours.offsets[v]; k < neighbours.offsets[v + 1] && !edge; ++k) {
+      edge = !passable[std::size_t(neighbours.neighbours[std::size_t(k)])];
+    }
     if (!edge) continue;
     const auto p = std::size_t(nearest[v]);
     const double s = (mesh.vertices[v] - points[p]).dot(normals[p]);
