@@ -17,11 +17,8 @@ std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighb
                                   const Points<D>& points, const Points<D>& normals, const std::vector<Index>& nearest) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<char> out(nv, 0);
-  bool enclosed = false;  // a free vertex the flood did not reach: else nothing to do
-  for (std::size_t v = 0; v < nv && !enclosed; ++v) enclosed = passable[v] && !reached[v];
-  if (!enclosed) return out;
   const std::vector<Index> region = vertex_components(mesh, passable);
-  std::size_t enclosed_regions = 0;  // one is inside the data: a second is needed for depth 2
+  std::size_t enclosed_regions = 0;  // free, not flooded: one is inside the data, depth 2 needs two
   for (std::size_t v = 0; v < nv; ++v) enclosed_regions += region[v] == Index(v) && !reached[v];
   if (enclosed_regions < 2) return out;
 
