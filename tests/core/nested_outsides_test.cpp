@@ -44,7 +44,9 @@ struct Shells {
     reached = flood_from_walls(mesh, passable);
   }
   double radius(std::size_t v) const { return (mesh.vertices[v] - Vec<3>::Constant(0.5)).norm(); }
-  std::vector<char> nested() const { return detail::nested_outsides(mesh, neighbours, passable, reached, points, normals, nearest); }
+  std::vector<char> nested() const {
+    return detail::nested_outsides(mesh, neighbours, vertex_components(mesh, passable), reached, points, normals, nearest);
+  }
 };
 
 TEST(NestedOutsides, ThreeNestedShellsMakeTheSecondGapOutsideAndTheCoreInside) {

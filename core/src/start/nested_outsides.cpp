@@ -2,8 +2,6 @@
 /// @file nested_outsides.cpp
 #include "start/nested_outsides.h"
 
-#include "start/outside_flood_fill.h"
-
 #include <algorithm>
 #include <deque>
 #include <tuple>
@@ -13,11 +11,10 @@ namespace lsr::detail {
 
 template <int D>
 std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                                  const std::vector<char>& passable, const std::vector<char>& reached,
+                                  const std::vector<Index>& region, const std::vector<char>& reached,
                                   const Points<D>& points, const Points<D>& normals, const std::vector<Index>& nearest) {
   const std::size_t nv = mesh.vertices.size();
   std::vector<char> out(nv, 0);
-  const std::vector<Index> region = vertex_components(mesh, passable);
   std::size_t enclosed_regions = 0;  // free, not flooded: one is inside the data, depth 2 needs two
   for (std::size_t v = 0; v < nv; ++v) enclosed_regions += region[v] == Index(v) && !reached[v];
   if (enclosed_regions < 2) return out;
@@ -28,7 +25,7 @@ std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighb
     if (region[v] < 0) continue;
     bool edge = false;
     for (Index k = neighbours.offsets[v]; k < neighbours.offsets[v + 1] && !edge; ++k) {
-      edge = !passable[std::size_t(neighbours.neighbours[std::size_t(k)])];
+      edge = region[std::size_t(neighbours.neighbours[std::size_t(k)])] < 0;
     }
     if (!edge) continue;
     const auto p = std::size_t(nearest[v]);
@@ -86,10 +83,10 @@ std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighb
   return out;
 }
 
-template std::vector<char> nested_outsides<2>(const SimplexMesh<2>&, const VertexNeighbours&, const std::vector<char>&,
+template std::vector<char> nested_outsides<2>(const SimplexMesh<2>&, const VertexNeighbours&, const std::vector<Index>&,
                                               const std::vector<char>&, const Points<2>&, const Points<2>&,
                                               const std::vector<Index>&);
-template std::vector<char> nested_outsides<3>(const SimplexMesh<3>&, const VertexNeighbours&, const std::vector<char>&,
+template std::vector<char> nested_outsides<3>(const SimplexMesh<3>&, const VertexNeighbours&, const std::vector<Index>&,
                                               const std::vector<char>&, const Points<3>&, const Points<3>&,
                                               const std::vector<Index>&);
 

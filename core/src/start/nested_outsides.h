@@ -24,13 +24,14 @@ namespace lsr::detail {
 
 /// @brief #V flags of the free vertices the flood did not reach that lie in regions of even depth.
 /// Deterministic.
-/// @param passable #V flags: a gap from the data (what the flood could cross)
+/// @param region #V components of the free vertices, a gap from the data (vertex_components of
+/// what the flood could cross), -1 elsewhere
 /// @param reached #V flags of the flood from the walls (flood_from_walls)
 /// @param points, normals the data and their unoriented unit normals
 /// @param nearest #V the data point nearest to each vertex
 template <int D>
 std::vector<char> nested_outsides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                                  const std::vector<char>& passable, const std::vector<char>& reached,
+                                  const std::vector<Index>& region, const std::vector<char>& reached,
                                   const Points<D>& points, const Points<D>& normals, const std::vector<Index>& nearest);
 
 }  // namespace lsr::detail

@@ -58,7 +58,11 @@ std::vector<Index> vertex_components(const SimplexMesh<D>& mesh, const std::vect
 
 template <int D>
 std::vector<char> flood_from_walls(const SimplexMesh<D>& mesh, const std::vector<char>& passable) {
-  const std::vector<Index> root = vertex_components(mesh, passable);
+  return flood_from_walls(mesh, vertex_components(mesh, passable));
+}
+
+template <int D>
+std::vector<char> flood_from_walls(const SimplexMesh<D>& mesh, const std::vector<Index>& root) {
   std::vector<char> root_reached(root.size(), 0);
   for (std::size_t v = 0; v < root.size(); ++v) {
     if (root[v] >= 0 && on_wall<D>(mesh.vertices[v])) root_reached[root[v]] = 1;
@@ -74,5 +78,7 @@ template bool on_wall<2>(const Vec<2>&);
 template bool on_wall<3>(const Vec<3>&);
 template std::vector<char> flood_from_walls<2>(const SimplexMesh<2>&, const std::vector<char>&);
 template std::vector<char> flood_from_walls<3>(const SimplexMesh<3>&, const std::vector<char>&);
+template std::vector<char> flood_from_walls<2>(const SimplexMesh<2>&, const std::vector<Index>&);
+template std::vector<char> flood_from_walls<3>(const SimplexMesh<3>&, const std::vector<Index>&);
 
 }  // namespace lsr

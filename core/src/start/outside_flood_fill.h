@@ -30,4 +30,9 @@ bool on_wall(const Vec<D>& x);
 template <int D>
 std::vector<char> flood_from_walls(const SimplexMesh<D>& mesh, const std::vector<char>& passable);
 
+/// @brief The same flood from the passable vertices' components (vertex_components), for a
+/// caller that needs them too.
+template <int D>
+std::vector<char> flood_from_walls(const SimplexMesh<D>& mesh, const std::vector<Index>& component);
+
 }  // namespace lsr

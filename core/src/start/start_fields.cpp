@@ -91,9 +91,10 @@ Eigen::VectorXd tagged_start(const SimplexMesh<D>& mesh, const VertexNeighbours&
     passable[v] = attraction[v] > gap &&
                   (edge_guard.empty() || attraction[v] > std::min(edge_guard[v], distance[v] - gap));
   }
-  std::vector<char> reached = flood_from_walls(mesh, passable);
+  const std::vector<Index> free_region = vertex_components(mesh, passable);
+  std::vector<char> reached = flood_from_walls(mesh, free_region);
   const std::vector<char> nested =
-      open ? nested_outsides(mesh, neighbours, passable, reached, open->data.points(), open->normals, open->nearest)
+      open ? nested_outsides(mesh, neighbours, free_region, reached, open->data.points(), open->normals, open->nearest)
            : std::vector<char>(n, 0);
   sealed = seal_cavities(mesh, neighbours, attraction, seal_radius, reached);
   if constexpr (D == 3) {
