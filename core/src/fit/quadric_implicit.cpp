@@ -100,8 +100,21 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
       const int c = class_of(std::size_t(i));
       const Index* near = c >= 0 ? &wide[std::size_t(c)][std::size_t(row[std::size_t(i - begin)]) * std::size_t(class_k[std::size_t(c)])]
                                  : &nearest[std::size_t(i) * k_clean];
-      fits_[std::size_t(i)] = fit_point(p, normals, std::size_t(i), near, size[std::size_t(i)], width[std::size_t(i)],
-                                        noise.empty() ? 0.0 : noise[std::size_t(i)]);
+      const int k = size[std::size_t(i)];
+      const double sigma = noise.empty() ? 0.0 : noise[std::size_t(i)];
+      Fit f = fit_point(p, normals, std::size_t(i), near, k, width[std::size_t(i)], sigma);
+      if (c >= 0) {
+        // Widened, it must still pass its own nearest within the noise (kMaxMissRatio).
+        const Index* own = &nearest[std::size_t(i) * k_clean];
+        double miss = 0.0;
+        for (int j = 0; j < k_clean; ++j) {
+          miss += std::pow(fit_value(f, p[std::size_t(i)], p[std::size_t(own[j])], nullptr), 2);
+        }
+        if (miss > kMaxMissRatio * k_clean * sigma * sigma) {
+          f = fit_point(p, normals, std::size_t(i), near, k_clean, width[std::size_t(i)], sigma);
+        }
+      }
+      fits_[std::size_t(i)] = f;
     }
   }
   progress.update("fit", 1.0);
