@@ -63,8 +63,8 @@ class QuadricImplicit {
   /// keeps that mean below sigma^2 (the fit leaves part of it in its residual), with a standard
   /// deviation of sigma^2 sqrt(2 / 30) = 0.26 sigma^2: 3 is eight of them above. Measured on
   /// CGAL's oni (1,435 points, noise a fifth of the spacing, fits of 160 points): the data
-  /// within p90 1.2 spacings of the surface and a horn's tip cut off as a second part, with the
-  /// test one part, p90 0.88. At 1.8 the scans' fits across their registration layers (whose
+  /// within p90 1.2 nearest-neighbour distances of the surface and a horn's tip cut off as a
+  /// second part, with the test one part, p90 0.88. At 1.8 the scans' fits across their registration layers (whose
   /// sigma understates their spread) were narrowed too: Chamfer distance 3-10% higher.
   static constexpr double kMaxMissRatio = 3.0;
 
