@@ -158,7 +158,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.limits.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, local_scales(sampling), o.limits.threads, progress);
+    const QuadricImplicit<D> fit =
+        fit_quadrics(data, normals, point_scale, local_scales(sampling), sampling.scan_lines, o.limits.threads, progress);
     attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
     if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);

@@ -261,8 +261,8 @@ void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, 
 template <int D>
 QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
                                 const std::vector<double>& point_scale, const std::vector<double>& sampling_scale,
-                                int threads, const Progress& progress) {
-  const std::vector<Index> kept = mesh_resolution_sample<D>(sampling_scale, point_scale);
+                                bool scan_lines, int threads, const Progress& progress) {
+  const std::vector<Index> kept = mesh_resolution_sample<D>(data, sampling_scale, point_scale, scan_lines, threads);
   const bool all = kept.size() == data.points().size();
   std::unique_ptr<const NearestPointIndex<D>> sample;
   Points<D> sample_normals;
@@ -293,9 +293,9 @@ QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D
 template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
 template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
 template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&,
-                                            const std::vector<double>&, int, const Progress&);
+                                            const std::vector<double>&, bool, int, const Progress&);
 template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,
-                                            const std::vector<double>&, int, const Progress&);
+                                            const std::vector<double>&, bool, int, const Progress&);
 template void attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<2>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,

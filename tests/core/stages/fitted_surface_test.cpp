@@ -23,7 +23,7 @@ TEST(FittedSurface, TheQuadricsOfASpherePutNearbyPointsOnIt) {
   Points<3> normals;
   for (const auto& p : data.points()) normals.push_back((p - centre).normalized());
   const LocalSampling<3> s = estimate_local_sampling(data, 1);
-  const QuadricImplicit<3> fit = fit_quadrics(data, normals, s.spacing, s.spacing, 1);
+  const QuadricImplicit<3> fit = fit_quadrics(data, normals, s.spacing, s.spacing, s.scan_lines, 1);
   // Points half a spacing s off the sphere, projected. A quadric through a neighbourhood of
   // radius r misses the sphere's height by its quartic term, r^4 / (8 R^3) at most; with the
   // kFitNeighbours nearest (r = s sqrt(kFitNeighbours / 6)) and R = 14 s here, that is about
@@ -58,7 +58,7 @@ TEST(FittedSurface, SheetsCloserThanTheMeshResolvesAreFittedAsOne) {
   const std::vector<double> sampling_scale = local_scales(s);
   std::vector<double> scale = sampling_scale;
   for (double& x : scale) x = std::max(x, h);  // as the mesh raises it (data_mesh.h)
-  const QuadricImplicit<3> fit = fit_quadrics(data, normals, scale, sampling_scale, 1);
+  const QuadricImplicit<3> fit = fit_quadrics(data, normals, scale, sampling_scale, s.scan_lines, 1);
   const Vec<3> middle = centre + 0.5 * shift;
   Points<3> poles;
   for (const auto& p : view) {
