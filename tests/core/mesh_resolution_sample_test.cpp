@@ -61,10 +61,10 @@ TEST(MeshResolutionSample, KeepsTheDensityOfTheRaisedScaleFromTheSpacing) {
 
 // Measured (as on scan lines) on i.i.d. points of density rho: the share is the density of a
 // sampling at the raised scale l, 6 / (pi rho l^2) on a surface, 1 / (rho l) on a curve, what
-// the spacing gives on average. On the unit
-// sphere a cap of chord radius r has area pi r^2 exactly, so pi rho r_30^2 is Gamma(29)
-// (the point and 29 others; coefficient of variation 1 / sqrt(29)); on the circle 2 rho r_10
-// is Gamma(9) up to the chord's 1e-9 (cv 1 / 3). l is set for a share of 1 / 16 and 1 / 4.
+// the spacing gives on average. On the unit sphere a cap of chord radius r has area pi r^2
+// exactly, so pi rho r_30^2 is Gamma(29) (the point and 29 others; coefficient of variation
+// 1 / sqrt(29)); on the circle 2 rho r_10 is Gamma(9) up to the chord's 1e-9 (cv 1 / 3). l is
+// set for a share of 1 / 16 and 1 / 4.
 TEST(MeshResolutionSample, KeepsTheDensityOfTheRaisedScaleOnRandomSamples) {
   const std::size_t n = 100000;
   {
@@ -83,12 +83,12 @@ TEST(MeshResolutionSample, KeepsTheDensityOfTheRaisedScaleOnRandomSamples) {
   }
 }
 
-// Scan lines: points a apart along lines g = 8 a apart, in a plane. Their spacing (raised to
-// the gap between the lines) says 1 / g^2 per area, their density is 1 / (a g): the share
-// kept is 6 a g / (pi l^2) (here 1 / 16), 8 times what the spacing asks. The 30 nearest lie on
-// 3 lines, each holding its chord / a points, up to 2 more or less at its ends: the disc's
-// count, 30, is within 6 of its area times the density, so the share within 20%; beyond
-// that, binomial (5 standard deviations). Points within 4 g of the border are not counted.
+// Scan lines: points a apart along lines g = 8 a apart, in a plane, their spacing raised to
+// 0.9 l by the gap between the lines (the spacing's share would keep 81%). Their density is
+// 1 / (a g): the share is 6 a g / (pi l^2), here 1 / 16. The 30 nearest lie on 3 lines, each
+// holding its chord / a points, up to 2 more or less at its ends: the disc's count, 30, is
+// within 6 of its area times the density, so the share within 20%; beyond that, binomial (5
+// standard deviations). Points within 4 g of the border are not counted.
 TEST(MeshResolutionSample, KeepsTheDensityOfTheRaisedScaleOnScanLines) {
   const double a = 1.0, g = 8.0;
   const int lines = 60, along = 1000;

@@ -33,37 +33,43 @@ template <int D>
 std::vector<Index> mesh_resolution_sample(const NearestPointIndex<D>& data, const std::vector<double>& sampling_scale,
                                           const std::vector<double>& scale, bool scan_lines, int threads) {
   const Points<D>& p = data.points();
-  const int k = std::min<int>(kDensityNeighbours<D>, int(p.size()));
   std::vector<double> share(p.size(), 1.0);
-  std::vector<std::size_t> measured;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!(scale[i] > sampling_scale[i])) continue;
-    if (scan_lines) {
-      measured.push_back(i);
-    } else {
-      share[i] = std::pow(sampling_scale[i] / scale[i], D - 1);
-    }
-  }
-  // The k nearest are the point and k - 1 others.
-  const double rank_share = double(LocalSampling<D>::kSpacingRank) / double(std::max(1, k - 1));
-  for (std::size_t begin = 0; begin < measured.size(); begin += kBlock) {
-    const std::size_t end = std::min(measured.size(), begin + kBlock);
-    Points<D> queries;
-    for (std::size_t j = begin; j < end; ++j) queries.push_back(p[measured[j]]);
-    LargeVector<Index> nearest;
-    data.query_k(queries, k, nearest, threads);
-    for (std::size_t j = begin; j < end; ++j) {
-      const std::size_t i = measured[j];
-      const double r = (p[std::size_t(nearest[(j - begin) * std::size_t(k) + std::size_t(k - 1)])] - p[i]).norm();
-      share[i] = rank_share * std::pow(r / scale[i], D - 1);
-    }
+    if (scale[i] > sampling_scale[i]) share[i] = std::pow(sampling_scale[i] / scale[i], D - 1);
   }
   std::vector<Index> kept;
   kept.reserve(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (share[i] >= 1.0 || uniform(i) < share[i]) kept.push_back(Index(i));
   }
-  return kept;
+  if (!scan_lines || kept.size() == p.size()) return kept;
+  // The spacing's sample is a superset: its density is the data's times that share, so its
+  // own r_k measures what is left to thin (at 10M points a tenth of the queries).
+  Points<D> kept_points(kept.size());
+  for (std::size_t j = 0; j < kept.size(); ++j) kept_points[j] = p[std::size_t(kept[j])];
+  const NearestPointIndex<D> sample(std::move(kept_points));
+  const Points<D>& q = sample.points();
+  const int k = std::min<int>(kDensityNeighbours<D>, int(q.size()));
+  // The k nearest are the point and k - 1 others.
+  const double rank_share = double(LocalSampling<D>::kSpacingRank) / double(std::max(1, k - 1));
+  std::vector<Index> thinned;
+  for (std::size_t begin = 0; begin < q.size(); begin += kBlock) {
+    const std::size_t end = std::min(q.size(), begin + kBlock);
+    const Points<D> queries(q.begin() + long(begin), q.begin() + long(end));
+    LargeVector<Index> nearest;
+    sample.query_k(queries, k, nearest, threads);
+    for (std::size_t j = begin; j < end; ++j) {
+      const std::size_t i = std::size_t(kept[j]);
+      if (!(scale[i] > sampling_scale[i])) {
+        thinned.push_back(kept[j]);
+        continue;
+      }
+      const double r = (q[std::size_t(nearest[(j - begin) * std::size_t(k) + std::size_t(k - 1)])] - q[j]).norm();
+      const double measured = share[i] * std::min(1.0, rank_share * std::pow(r / scale[i], D - 1));
+      if (measured >= 1.0 || uniform(i) < measured) thinned.push_back(kept[j]);
+    }
+  }
+  return thinned;
 }
 
 template std::vector<Index> mesh_resolution_sample<2>(const NearestPointIndex<2>&, const std::vector<double>&,

@@ -15,11 +15,12 @@
 /// spacing s tells that density, (s / l)^(D-1), except on scan lines, whose spacing is raised
 /// to the gap between the lines (local_sampling.h) while the points lie 3-10 times closer along
 /// them: there the spacing's share kept 72% of a 1M-point line scan of a sphere where its
-/// density asks for a third. On scan lines the density is measured by the distance r_k to the
-/// k-th nearest (the point and k - 1 others): 6 others (LocalSampling::kSpacingRank) within l
-/// against k - 1 within r_k, a share of (6 / (k - 1)) (r_k / l)^2 (in 2D (2 / (k - 1)) (r_k /
-/// l)). On i.i.d. samples of density rho, pi rho r_k^2 is Gamma(k - 1)-distributed, and that
-/// share's mean is the spacing's (s / l)^2.
+/// density asks for a third. On scan lines the spacing's sample is thinned further by its own
+/// density, measured by the distance r_k to the k-th nearest in it (the point and k - 1
+/// others): 6 others (LocalSampling::kSpacingRank) within l against k - 1 within r_k, a share
+/// of (6 / (k - 1)) (r_k / l)^2 (in 2D (2 / (k - 1)) (r_k / l)), at most all of it. On i.i.d.
+/// samples of density rho, pi rho r_k^2 is Gamma(k - 1)-distributed, and that share's mean is
+/// the spacing's (s / l)^2.
 #pragma once
 
 #include "geometry/nearest_point_index.h"
@@ -29,8 +30,7 @@
 namespace lsr {
 
 /// @brief The indices kept, in increasing order: every point whose scale is its sampling
-/// scale, and of the points whose scale was raised (scale > sampling_scale) the share above
-/// (at most all). Chosen by a hash of the index (deterministic; a random choice does not alias
+/// scale, and of the points whose scale was raised (scale > sampling_scale) the share above. Chosen by a hash of the index (deterministic; a random choice does not alias
 /// with scan lines as a regular one would). All points where no scale was raised.
 /// @param scan_lines the cloud was read as scan lines (LocalSampling::scan_lines): measure
 /// the density
