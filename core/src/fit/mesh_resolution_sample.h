@@ -19,8 +19,8 @@
 /// density, measured by the distance r_k to the k-th nearest in it (the point and k - 1
 /// others): 6 others (LocalSampling::kSpacingRank) within l against k - 1 within r_k, a share
 /// of (6 / (k - 1)) (r_k / l)^2 (in 2D (2 / (k - 1)) (r_k / l)), at most all of it. On i.i.d.
-/// samples of density rho, pi rho r_k^2 is Gamma(k - 1)-distributed, and that share's mean is
-/// the spacing's (s / l)^2.
+/// samples pi rho r_k^2 is Gamma(k - 1)-distributed (rho: the sample's density), so there that
+/// share's mean is 1 and the two together keep the spacing's (s / l)^2.
 #pragma once
 
 #include "geometry/nearest_point_index.h"
