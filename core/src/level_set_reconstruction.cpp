@@ -20,6 +20,7 @@
 #include "mesh/vertices_near.h"
 #include "sampling/data_preparation.h"
 #include "sampling/local_sampling.h"
+#include "sampling/mesh_resolution_data.h"
 #include "sampling/unit_box_transform.h"
 #include "stage_clock.h"
 #include "start/start_fields.h"
@@ -86,7 +87,11 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     return r;
   }
 
-  // 3. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
+  // 3. Where the data are denser than the mesh resolves, the rest reads a sample at its size.
+  const LeftOut<D> left_out =
+      keep_mesh_resolution(data, sampling, point_scale, local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads);
+
+  // 4. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
   AdaptiveMesh<D> adaptive;
   if (anisotropic) {
     adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
@@ -98,7 +103,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.mesh_simplices = Index(mesh.simplices.size());
   clock.end("mesh");
 
-  // 4. The distance d at the vertices, each vertex's scale, each point's place in the mesh.
+  // 5. The distance d at the vertices, each vertex's scale, each point's place in the mesh.
   progress.update("distance", -1.0);
   const VertexFields<D> at_vertex = vertex_fields(data, mesh, sampling, point_scale, o.limits.threads);
   const Eigen::VectorXd& scale = at_vertex.scale;
@@ -109,7 +114,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   release_forest(adaptive);  // its last use: a third of the peak at 200k points
   clock.end("distance");
 
-  // 5. The P1 operators of the scheme.
+  // 6. The P1 operators of the scheme.
   progress.update("operators", -1.0);
   VertexNeighbours neighbours;
   P1Operators<D> ops;
@@ -120,7 +125,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   }
   clock.end("operators");
 
-  // 6. The settings, the attraction (spanned holes included) and u0.
+  // 7. The settings, the attraction (spanned holes included) and u0.
   progress.update("setup", -1.0);
   const EvolutionSettings settings = resolve_evolution_settings(
       o, scale, at_vertex.noise, point_scale, spacing, o.start.initial_front != InitialFront::tagged || custom_start);
@@ -142,7 +147,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   close_pocket(start, attract.d, near_hole, near_opening);
   const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
-  // 7. The time loop: the front evolves to the data; the best iterate is kept.
+  // 8. The time loop: the front evolves to the data; the best iterate is kept.
   const FrontProblem<D> problem{mesh,  neighbours,         ops,   at,   cells, settings.eps, settings.reach,
                                 settings.front_tolerance, scale, dist, away,  near_hole};
   FrontEvolution<D> evolution(problem, o, settings.schedule, settings.step);
@@ -150,16 +155,15 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.residual = evolution.best_residual() * settings.median_eps / box.scale();
   Eigen::VectorXd& best = evolution.best();
 
-  // 8. The input's normals, then the surface: the fit through the data, or the front itself.
+  // 9. The input's normals, then the surface: the fit through the data, or the front itself.
   const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
-  r.point_normals = in.input_normals(normals, input.size());
+  r.point_normals = in.input_normals(every_point_normals(left_out, data, normals, box, in.points, o.limits.threads), input.size());
   progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
   if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
     if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.limits.threads);
     ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit =
-        fit_quadrics(data, normals, point_scale, local_scales(sampling), sampling.scan_lines, o.limits.threads, progress);
+    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
     attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
     if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
@@ -170,7 +174,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     clock.end("extract");
   }
 
-  // 9. Back to the input's coordinates.
+  // 10. Back to the input's coordinates.
   for (auto& x : r.surface.vertices) x = box.from_unit(x);
   for (auto& x : r.volume.vertices) x = box.from_unit(x);
   if constexpr (D == 2) r.loops = closed_loops(r.surface);

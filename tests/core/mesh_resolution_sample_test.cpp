@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file mesh_resolution_sample_test.cpp
-/// @brief The fits' sample: every point where the mesh raised no scale, the density of the
-/// raised scale elsewhere (from the spacing, or on scan lines, whose spacing is not their
-/// density, measured), the same choice on every call.
-#include "fit/mesh_resolution_sample.h"
+/// @brief The sample at the mesh's resolution: every point where the mesh raised no scale, the
+/// density of the raised scale elsewhere (from the spacing, or on scan lines, whose spacing is
+/// not their density, measured), the same choice on every call.
+#include "sampling/mesh_resolution_sample.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,6 @@
 
 #include "fit/curve_refinement.h"
 #include "fit/merge_without_joins.h"
-#include "fit/mesh_resolution_sample.h"
 #include "fit/rim_normals.h"
 #include "fit/sheet_gaps.h"
 #include "fit/surface_refinement.h"
@@ -259,43 +258,22 @@ void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, 
 }
 
 template <int D>
-QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& point_scale, const std::vector<double>& sampling_scale,
-                                bool scan_lines, int threads, const Progress& progress) {
-  const std::vector<Index> kept = mesh_resolution_sample<D>(data, sampling_scale, point_scale, scan_lines, threads);
-  const bool all = kept.size() == data.points().size();
-  std::unique_ptr<const NearestPointIndex<D>> sample;
-  Points<D> sample_normals;
-  std::vector<double> sample_scale;
-  if (!all) {
-    Points<D> points(kept.size());
-    sample_normals.resize(kept.size());
-    sample_scale.resize(kept.size());
-    for (std::size_t j = 0; j < kept.size(); ++j) {
-      points[j] = data.points()[std::size_t(kept[j])];
-      sample_normals[j] = normals[std::size_t(kept[j])];
-      sample_scale[j] = point_scale[std::size_t(kept[j])];
-    }
-    sample = std::make_unique<const NearestPointIndex<D>>(std::move(points));
-  }
-  const NearestPointIndex<D>& fitted = all ? data : *sample;
-  const Points<D>& fitted_normals = all ? normals : sample_normals;
+QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals, const std::vector<double>& point_scale,
+                                int threads, const Progress& progress) {
   // Both read the same neighbours (freed before the blends).
-  const int k = std::min<int>(QuadricImplicit<D>::kFitNeighbours, int(fitted.points().size()));
+  const int k = std::min<int>(QuadricImplicit<D>::kFitNeighbours, int(data.points().size()));
   LargeVector<Index> nearest;
-  fitted.query_k(fitted.points(), k, nearest, threads);
-  const std::vector<double> fit_noise = residual_noise(fitted.points(), fitted_normals, nearest, k, threads);
-  if (all) return QuadricImplicit<D>(data, normals, point_scale, fit_noise, threads, &nearest, progress);
-  return QuadricImplicit<D>(std::move(sample), std::move(sample_normals), std::move(sample_scale), fit_noise, threads,
-                            &nearest, progress);
+  data.query_k(data.points(), k, nearest, threads);
+  const std::vector<double> fit_noise = residual_noise(data.points(), normals, nearest, k, threads);
+  return QuadricImplicit<D>(data, normals, point_scale, fit_noise, threads, &nearest, progress);
 }
 
 template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
 template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
-template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&,
-                                            const std::vector<double>&, bool, int, const Progress&);
-template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,
-                                            const std::vector<double>&, bool, int, const Progress&);
+template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int,
+                                            const Progress&);
+template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int,
+                                            const Progress&);
 template void attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<2>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,

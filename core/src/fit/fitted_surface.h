@@ -36,12 +36,10 @@ void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, 
 
 /// @brief The blended local quadrics through the data (unit box) with their oriented normals;
 /// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that
-/// PCA's thickness also counts. Where the mesh raised point_scale above sampling_scale (the
-/// data denser than it resolves) the fits see a sample at the raised scale
-/// (mesh_resolution_sample.h; `scan_lines`: the cloud was read as scan lines).
+/// PCA's thickness also counts. Where the cloud is denser than the mesh, `data` is already the
+/// sample at the mesh's size (mesh_resolution_data.h), which the fits need as much as the mesh.
 template <int D>
-QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& point_scale, const std::vector<double>& sampling_scale,
-                                bool scan_lines, int threads, const Progress& progress = Progress());
+QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D>& normals, const std::vector<double>& point_scale,
+                                int threads, const Progress& progress = Progress());
 
 }  // namespace lsr::detail

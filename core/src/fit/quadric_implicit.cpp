@@ -121,14 +121,6 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
 }
 
 template <int D>
-QuadricImplicit<D>::QuadricImplicit(std::unique_ptr<const NearestPointIndex<D>> data, Points<D> normals,
-                                    std::vector<double> spacing, const std::vector<double>& noise, int threads,
-                                    const LargeVector<Index>* nearest, const Progress& progress)
-    : QuadricImplicit(*data, std::move(normals), std::move(spacing), noise, threads, nearest, progress) {
-  owned_ = std::move(data);
-}
-
-template <int D>
 auto QuadricImplicit<D>::fit_point(const Points<D>& p, const Points<D>& normals, std::size_t i, const Index* near, int k,
                                    double width, double noise) const -> Fit {
   Fit f;

@@ -15,7 +15,6 @@
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/progress.h"
 
-#include <memory>
 #include <vector>
 
 namespace lsr {
@@ -80,11 +79,6 @@ class QuadricImplicit {
   QuadricImplicit(const NearestPointIndex<D>& data, Points<D> normals, std::vector<double> spacing,
                   const std::vector<double>& noise = {}, int threads = 0,
                   const LargeVector<Index>* nearest = nullptr, const Progress& progress = Progress());
-  /// @brief The same over points it keeps (a sample of the data: mesh_resolution_sample.h).
-  QuadricImplicit(std::unique_ptr<const NearestPointIndex<D>> data, Points<D> normals, std::vector<double> spacing,
-                  const std::vector<double>& noise, int threads, const LargeVector<Index>* nearest,
-                  const Progress& progress);
-
   /// @brief F at each query (#Q) and, if asked, the unit outward normal of the blended fits.
   void evaluate(const Points<D>& queries, std::vector<double>& value, Points<D>* normal = nullptr,
                 int threads = 0) const;
@@ -118,7 +112,6 @@ class QuadricImplicit {
   void blend(const Points<D>& queries, const LargeVector<Index>& nearest, int k, std::vector<double>& value,
              Points<D>* normal, int threads) const;
 
-  std::unique_ptr<const NearestPointIndex<D>> owned_;  ///< the data, when a sample kept here
   const NearestPointIndex<D>* data_;
   std::vector<double> spacing_;
   std::vector<double> blend_width2_;  ///< per point: the squared width of its blending weight

@@ -7,6 +7,7 @@
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "sampling/data_preparation.h"
 #include "sampling/local_sampling.h"
+#include "sampling/mesh_resolution_data.h"
 
 #include <gtest/gtest.h>
 
@@ -23,7 +24,7 @@ TEST(FittedSurface, TheQuadricsOfASpherePutNearbyPointsOnIt) {
   Points<3> normals;
   for (const auto& p : data.points()) normals.push_back((p - centre).normalized());
   const LocalSampling<3> s = estimate_local_sampling(data, 1);
-  const QuadricImplicit<3> fit = fit_quadrics(data, normals, s.spacing, s.spacing, s.scan_lines, 1);
+  const QuadricImplicit<3> fit = fit_quadrics(data, normals, s.spacing, 1);
   // Points half a spacing s off the sphere, projected. A quadric through a neighbourhood of
   // radius r misses the sphere's height by its quartic term, r^4 / (8 R^3) at most; with the
   // kFitNeighbours nearest (r = s sqrt(kFitNeighbours / 6)) and R = 14 s here, that is about
@@ -53,12 +54,15 @@ TEST(FittedSurface, SheetsCloserThanTheMeshResolvesAreFittedAsOne) {
   Points<3> points = view, normals;
   for (const auto& p : view) points.push_back(p + shift);
   for (const auto& p : points) normals.push_back((p - centre - (normals.size() < view.size() ? Vec<3>::Zero() : shift)).normalized());
-  const NearestPointIndex<3> data(points);
-  const LocalSampling<3> s = estimate_local_sampling(data, 1);
-  const std::vector<double> sampling_scale = local_scales(s);
-  std::vector<double> scale = sampling_scale;
+  NearestPointIndex<3> data(points);
+  LocalSampling<3> s = estimate_local_sampling(data, 1);
+  std::vector<double> scale = local_scales(s);
+  const LeftOut<3> out = keep_mesh_resolution(data, s, scale, std::vector<double>(scale.size(), h), 1);
+  ASSERT_FALSE(out.kept.empty());
+  Points<3> kept_normals;
+  for (Index i : out.kept) kept_normals.push_back(normals[std::size_t(i)]);
   for (double& x : scale) x = std::max(x, h);  // as the mesh raises it (data_mesh.h)
-  const QuadricImplicit<3> fit = fit_quadrics(data, normals, scale, sampling_scale, s.scan_lines, 1);
+  const QuadricImplicit<3> fit = fit_quadrics(data, kept_normals, scale, 1);
   const Vec<3> middle = centre + 0.5 * shift;
   Points<3> poles;
   for (const auto& p : view) {

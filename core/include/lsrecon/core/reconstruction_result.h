@@ -44,7 +44,9 @@ struct ReconstructionResult {
   std::size_t unreached_points = 0;
   double output_level = 0.0;        ///< without OutputOptions::fit_surface: the level of u extracted, input units
   /// #input points: outward unit normal of each input point (PCA of its neighbours, oriented
-  /// by grad u); NaN for skipped points. Feed these to normal-based methods such as Poisson.
+  /// by grad u; where the cloud is denser than the mesh, the points the mesh's sample left out
+  /// as their nearest kept point); NaN for skipped points. Feed these to normal-based methods
+  /// such as Poisson.
   Points<D> point_normals;
   double spacing = 0.0;             ///< median local sampling spacing, input units
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units

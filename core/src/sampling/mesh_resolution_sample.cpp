@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file mesh_resolution_sample.cpp
-#include "fit/mesh_resolution_sample.h"
+#include "sampling/mesh_resolution_sample.h"
 
 #include "sampling/local_sampling.h"
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file mesh_resolution_sample.h
-/// @brief The points the fits see: the data thinned to the density the mesh resolves.
+/// @brief The points the stages after the sampling see (mesh_resolution_data.h): the data
+/// thinned to the density the mesh resolves.
 ///
 /// Where the data are denser than the mesh's finest size (a 3M-point scan under a mesh of
 /// resolution 256), the scale of a point is raised to that size (data_mesh.h), but a fit

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file mesh_resolution_data.h
+/// @brief The data the stages after the sampling read: where the cloud is denser than the mesh
+/// resolves, the sample of mesh_resolution_sample.h with its sampling, so that the mesh, the
+/// front, the stopping test and the fits cost what the mesh's cap allows, not what the cloud
+/// holds (10M points: 51 s after the sampling against 21 s, docs/how-it-works.md).
+#pragma once
+
+#include "geometry/nearest_point_index.h"
+#include "sampling/local_sampling.h"
+#include "sampling/unit_box_transform.h"
+
+#include <vector>
+
+namespace lsr::detail {
+
+/// @brief What keep_mesh_resolution left out, to give every point its normal at the end.
+template <int D>
+struct LeftOut {
+  std::vector<Index> kept;  ///< the points kept, increasing indices into the full data; empty: all kept
+  Points<D> normals;        ///< every point's PCA normal (LocalSampling::normals), when some were left out
+};
+
+/// @brief Thins data, sampling and point_scale in place to mesh_resolution_sample's points,
+/// the sample at the mesh size of each point (mesh_size: local_mesh_sizes of point_scale), and
+/// the rim points (LocalSampling::rim). Nothing changes where no size exceeds its point's scale.
+/// @param threads 0 for all cores
+template <int D>
+LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sampling, std::vector<double>& point_scale,
+                                const std::vector<double>& mesh_size, int threads);
+
+/// @brief Every point's outward normal (#points, input coordinates): a kept point's is
+/// `oriented` (#kept, in the kept data's order), a point left out turns its PCA normal to agree
+/// with that of its nearest kept point, at most about one mesh size away on the same sheet.
+/// Without a point left out, `oriented` itself.
+/// @param threads 0 for all cores
+template <int D>
+Points<D> every_point_normals(const LeftOut<D>& out, const NearestPointIndex<D>& kept, Points<D> oriented,
+                              const UnitBoxTransform<D>& box, const Points<D>& points, int threads);
+
+}  // namespace lsr::detail
