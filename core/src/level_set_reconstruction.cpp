@@ -149,7 +149,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 8. The time loop: the front evolves to the data; the best iterate is kept.
   const FrontProblem<D> problem{mesh,  neighbours,         ops,   at,   cells, settings.eps, settings.reach,
-                                settings.front_tolerance, scale, dist, away,  near_hole};
+                                settings.front_tolerance, scale, dist, away,  near_hole, left_out.represented};
   FrontEvolution<D> evolution(problem, o, settings.schedule, settings.step);
   evolution.run(start.u, attract.d, r, progress, clock, settings.median_eps, box.scale());
   r.residual = evolution.best_residual() * settings.median_eps / box.scale();
@@ -157,7 +157,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 9. The input's normals, then the surface: the fit through the data, or the front itself.
   const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
-  r.point_normals = in.input_normals(every_point_normals(left_out, data, normals, box, in.points, o.limits.threads), input.size());
+  r.point_normals = in.input_normals(every_point_normals(left_out, normals), input.size());
   progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
   if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.

@@ -5,6 +5,7 @@
 #include "sampling/mesh_resolution_data.h"
 
 #include "sampling/data_preparation.h"
+#include "sampling/unit_box_transform.h"
 
 #include <gtest/gtest.h>
 
@@ -49,6 +50,18 @@ TEST(MeshResolutionData, ThinsTheSamplingWithItsPoints) {
   ASSERT_EQ(data.points().size(), out.kept.size());
   ASSERT_EQ(s.spacing.size(), out.kept.size());
   ASSERT_EQ(s.height_fields.size(), out.kept.size());
+  // Each point stands for itself and the points left out nearest to it: the whole cloud.
+  ASSERT_EQ(out.represented.size(), out.kept.size());
+  Index represented = 0;
+  for (Index n : out.represented) {
+    EXPECT_GE(n, 1);
+    represented += n;
+  }
+  EXPECT_EQ(represented, Index(points.size()));
+  for (std::size_t i = 0; i < points.size(); i += 97) {
+    const Index j = out.nearest[i];
+    for (const auto& q : data.points()) EXPECT_LE((points[i] - data.points()[std::size_t(j)]).norm(), (points[i] - q).norm() + 1e-15);
+  }
   for (std::size_t j = 0; j < out.kept.size(); ++j) {
     const auto i = std::size_t(out.kept[j]);
     if (j > 0) {
@@ -101,7 +114,7 @@ TEST(MeshResolutionData, EveryPointTakesTheSideOfItsNearestKeptPoint) {
   ASSERT_FALSE(out.kept.empty());
   Points<3> oriented;
   for (Index i : out.kept) oriented.push_back((points[std::size_t(i)] - centre).normalized());
-  const Points<3> normals = every_point_normals(out, data, oriented, box, points, 1);
+  const Points<3> normals = every_point_normals(out, oriented);
   ASSERT_EQ(normals.size(), points.size());
   for (std::size_t j = 0; j < out.kept.size(); ++j) EXPECT_EQ(normals[std::size_t(out.kept[j])], oriented[j]);
   int inward = 0;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace lsr::detail {
 
@@ -35,6 +36,8 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
   double progress_fraction = 0.0;
   best_ = u;
   bool best_front_ok = false;
+  const double cloud_points =
+      p_.represented.empty() ? double(p_.at.size()) : double(std::accumulate(p_.represented.begin(), p_.represented.end(), Index(0)));
   try {
     // Its vectors are kept from step to step, released before each renormalisation (the
     // loop's peak) and freed before the fit.
@@ -87,13 +90,16 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         best_ = u;
         best_is_distance_ = n % interval == 0;
         r.best_iteration = n;
-        r.unreached_points = std::size_t(std::count_if(per_point.begin(), per_point.end(), [](double x) { return x > 1.0; }));
+        r.unreached_points = 0;
+        for (std::size_t i = 0; i < per_point.size(); ++i) {
+          if (per_point[i] > 1.0) r.unreached_points += p_.represented.empty() ? 1 : std::size_t(p_.represented[i]);
+        }
         best_front_ok = front_distance <= 1.0;
       }
       clock.end("stopping test");
       // Within tolerance; or, if asked, as good as a stall would leave it (below) without
       // waiting for the stall.
-      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.stopping.unreached_fraction * double(p_.at.size());
+      const bool few_unreached = best_front_ok && double(r.unreached_points) <= o.stopping.unreached_fraction * cloud_points;
       if (best_residual_ <= 1.0 || (o.stopping.stop_when_few_unreached && r.best_iteration == n && few_unreached)) {
         r.status = ReconstructionStatus::converged;
         break;

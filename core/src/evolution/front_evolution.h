@@ -36,6 +36,9 @@ struct FrontProblem {
   const std::vector<double>& dist;     ///< #V: distance to the data
   const Points<D>& away_from_data;     ///< #V unit directions away from the nearest point; empty unless a drive reads them
   const std::vector<char>& near_hole;  ///< #V: within a hole's radius of a spanned hole; empty without holes
+  /// #N: the points of the cloud each data point stands for (mesh_resolution_data.h), which the
+  /// unreached count adds up; empty: one each
+  const std::vector<Index>& represented;
 };
 
 /// @brief How often to renormalise, where, and what the stall rule is: the loop's schedule.

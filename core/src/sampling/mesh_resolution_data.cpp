@@ -9,7 +9,7 @@
 namespace lsr::detail {
 namespace {
 
-// Points transformed and queried at a time: bounds the copies at 10M points.
+// Points queried at a time: bounds the copies at 10M points.
 constexpr std::size_t kBlock = std::size_t(1) << 16;
 
 template <typename Values>
@@ -44,7 +44,32 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
     out.kept = std::move(with_rims);
   }
   if (out.kept.size() == point_scale.size()) return {};
-  data = NearestPointIndex<D>(kept_of(data.points(), out.kept));
+  NearestPointIndex<D> kept(kept_of(data.points(), out.kept));
+  out.nearest.assign(point_scale.size(), 0);
+  out.represented.assign(out.kept.size(), 0);
+  std::vector<char> is_kept(point_scale.size(), 0);
+  for (std::size_t j = 0; j < out.kept.size(); ++j) {
+    is_kept[std::size_t(out.kept[j])] = 1;
+    out.nearest[std::size_t(out.kept[j])] = Index(j);
+  }
+  std::vector<std::size_t> left;
+  Points<D> at;
+  std::vector<double> distance;
+  std::vector<Index> nearest;
+  for (std::size_t begin = 0; begin < point_scale.size(); begin += kBlock) {
+    const std::size_t end = std::min(point_scale.size(), begin + kBlock);
+    left.clear();
+    at.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      if (is_kept[i]) continue;
+      left.push_back(i);
+      at.push_back(data.points()[i]);
+    }
+    kept.query(at, distance, &nearest, threads);
+    for (std::size_t q = 0; q < left.size(); ++q) out.nearest[left[q]] = nearest[q];
+  }
+  for (Index j : out.nearest) out.represented[std::size_t(j)] += 1;
+  data = std::move(kept);
   out.normals = std::move(sampling.normals);
   sampling.normals = kept_of(out.normals, out.kept);
   sampling.spacing = kept_of(sampling.spacing, out.kept);
@@ -57,40 +82,20 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
 }
 
 template <int D>
-Points<D> every_point_normals(const LeftOut<D>& out, const NearestPointIndex<D>& kept, Points<D> oriented,
-                              const UnitBoxTransform<D>& box, const Points<D>& points, int threads) {
+Points<D> every_point_normals(const LeftOut<D>& out, Points<D> oriented) {
   if (out.kept.empty()) return oriented;
   Points<D> normals = out.normals;
-  for (std::size_t j = 0; j < out.kept.size(); ++j) normals[std::size_t(out.kept[j])] = oriented[j];
-  std::vector<char> is_kept(points.size(), 0);
-  for (Index i : out.kept) is_kept[std::size_t(i)] = 1;
-  std::vector<std::size_t> left;
-  Points<D> at;
-  std::vector<double> distance;
-  std::vector<Index> nearest;
-  for (std::size_t begin = 0; begin < points.size(); begin += kBlock) {
-    const std::size_t end = std::min(points.size(), begin + kBlock);
-    left.clear();
-    at.clear();
-    for (std::size_t i = begin; i < end; ++i) {
-      if (is_kept[i]) continue;
-      left.push_back(i);
-      at.push_back(box.to_unit(points[i]));
-    }
-    kept.query(at, distance, &nearest, threads);
-    for (std::size_t q = 0; q < left.size(); ++q) {
-      Vec<D>& n = normals[left[q]];
-      if (n.dot(oriented[std::size_t(nearest[q])]) < 0.0) n = -n;
-    }
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    const Vec<D>& to = oriented[std::size_t(out.nearest[i])];
+    if (normals[i].dot(to) < 0.0) normals[i] = -normals[i];
   }
+  for (std::size_t j = 0; j < out.kept.size(); ++j) normals[std::size_t(out.kept[j])] = oriented[j];
   return normals;
 }
 
 template LeftOut<2> keep_mesh_resolution<2>(NearestPointIndex<2>&, LocalSampling<2>&, std::vector<double>&, const std::vector<double>&, int);
 template LeftOut<3> keep_mesh_resolution<3>(NearestPointIndex<3>&, LocalSampling<3>&, std::vector<double>&, const std::vector<double>&, int);
-template Points<2> every_point_normals<2>(const LeftOut<2>&, const NearestPointIndex<2>&, Points<2>, const UnitBoxTransform<2>&,
-                                          const Points<2>&, int);
-template Points<3> every_point_normals<3>(const LeftOut<3>&, const NearestPointIndex<3>&, Points<3>, const UnitBoxTransform<3>&,
-                                          const Points<3>&, int);
+template Points<2> every_point_normals<2>(const LeftOut<2>&, Points<2>);
+template Points<3> every_point_normals<3>(const LeftOut<3>&, Points<3>);
 
 }  // namespace lsr::detail

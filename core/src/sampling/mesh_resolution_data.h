@@ -8,17 +8,19 @@
 
 #include "geometry/nearest_point_index.h"
 #include "sampling/local_sampling.h"
-#include "sampling/unit_box_transform.h"
 
 #include <vector>
 
 namespace lsr::detail {
 
-/// @brief What keep_mesh_resolution left out, to give every point its normal at the end.
+/// @brief What keep_mesh_resolution left out: what each kept point stands for, and what gives
+/// every point its normal at the end. All empty when every point was kept.
 template <int D>
 struct LeftOut {
-  std::vector<Index> kept;  ///< the points kept, increasing indices into the full data; empty: all kept
-  Points<D> normals;        ///< every point's PCA normal (LocalSampling::normals), when some were left out
+  std::vector<Index> kept;         ///< the points kept, increasing indices into the full data
+  std::vector<Index> nearest;      ///< every point's nearest kept point (an index into the kept data)
+  std::vector<Index> represented;  ///< #kept: the points of the cloud nearest to each, itself included
+  Points<D> normals;               ///< every point's PCA normal (LocalSampling::normals)
 };
 
 /// @brief Thins data, sampling and point_scale in place to mesh_resolution_sample's points,
@@ -29,13 +31,10 @@ template <int D>
 LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sampling, std::vector<double>& point_scale,
                                 const std::vector<double>& mesh_size, int threads);
 
-/// @brief Every point's outward normal (#points, input coordinates): a kept point's is
-/// `oriented` (#kept, in the kept data's order), a point left out turns its PCA normal to agree
-/// with that of its nearest kept point, at most about one mesh size away on the same sheet.
-/// Without a point left out, `oriented` itself.
-/// @param threads 0 for all cores
+/// @brief Every point's outward normal: a kept point's is `oriented` (#kept, in the kept data's
+/// order), a point left out turns its PCA normal to agree with that of its nearest kept point,
+/// at most about one mesh size away on the same sheet. Without a point left out, `oriented`.
 template <int D>
-Points<D> every_point_normals(const LeftOut<D>& out, const NearestPointIndex<D>& kept, Points<D> oriented,
-                              const UnitBoxTransform<D>& box, const Points<D>& points, int threads);
+Points<D> every_point_normals(const LeftOut<D>& out, Points<D> oriented);
 
 }  // namespace lsr::detail

@@ -34,6 +34,7 @@ struct Loop {
   EvolutionSettings settings;
   Points<2> away;
   std::vector<char> near_hole;
+  std::vector<Index> represented;  // one point each
   Eigen::VectorXd u0;
 
   Loop() {
@@ -60,7 +61,8 @@ struct Loop {
     }
   }
   FrontProblem<2> problem() const {
-    return {adaptive.mesh, neighbours, ops, at, cells, settings.eps, settings.reach, settings.front_tolerance, scale, dist, away, near_hole};
+    return {adaptive.mesh, neighbours, ops,  at,   cells,     settings.eps, settings.reach, settings.front_tolerance,
+            scale,         dist,       away, near_hole, represented};
   }
 };
 
