@@ -244,6 +244,13 @@ Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
                    c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
     }
   }
+  // lsrecon-mpi: each rank passes its share of the points, in rank order (tile_exchange.h).
+  if (const auto& x = c.solver.limits.exchange; x && x->workers() > 1) {
+    const std::size_t n = in.points.size(), w = std::size_t(x->worker()), k = std::size_t(x->workers());
+    lsr::Points<3> share(in.points.begin() + long(w * n / k), in.points.begin() + long((w + 1) * n / k));
+    in.other_ranks = n - share.size();
+    in.points = std::move(share);
+  }
   return in;
 }
 
@@ -254,8 +261,8 @@ lsr::Points<2> planar(const Input& in) {
 }
 
 #ifdef LSRECON_MPI
-// A rank other than 0 of lsrecon-mpi: the same points and options, its share of the sampling's
-// tiles (lsrecon/core/tile_exchange.h), nothing written.
+// A rank other than 0 of lsrecon-mpi: its share of the points, the same options, its part of the
+// sampling (lsrecon/core/tile_exchange.h), nothing written.
 int share_tiles(const Cli& c) {
   double read_seconds = 0.0;
   const Input in = prepared_input(c, nullptr, read_seconds);
@@ -332,8 +339,9 @@ void wait_for_all_ranks() {
   for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;) usleep(20000);
 }
 
-// lsrecon-mpi: every rank parses the same command line and reads the same input (from shared
-// storage); rank 0 runs lsrecon, the others share the sampling's tiles with it and stop. A rank
+// lsrecon-mpi: every rank parses the same command line, reads the same input (from shared
+// storage) and keeps its share; rank 0 runs lsrecon, the others share the sampling with it and
+// stop. A rank
 // that fails aborts them all, as the others would wait for it.
 int main(int argc, char** argv) {
   int provided = 0;

@@ -59,7 +59,7 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                                                                               : "cancelled";
   json report = {{"lsrecon_version", LSRECON_VERSION},
                  {"input", c.demo.empty() ? c.input : "demo:" + c.demo},
-                 {"input_points", in.points.size() + in.skipped},
+                 {"input_points", in.points.size() + in.skipped + in.other_ranks},
                  {"skipped_points", in.skipped + r.skipped_points},
                  {"outlier_points", r.outlier_points},
                  {"duplicate_points", r.duplicate_points},

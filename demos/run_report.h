@@ -21,6 +21,7 @@ struct Input {
   int dim = 3;
   std::size_t skipped = 0;
   std::size_t statistical_outliers = 0;  ///< left out by pcl::StatisticalOutlierRemoval
+  std::size_t other_ranks = 0;           ///< lsrecon-mpi: the points the other ranks took (points: this rank's share)
 };
 
 // What was written: for the report and the summary line.

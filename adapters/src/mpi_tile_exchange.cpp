@@ -4,7 +4,8 @@
 
 #include "lsrecon/core/errors.h"
 
-#include <climits>
+#include <algorithm>
+#include <cstdint>
 #include <string>
 
 namespace lsr::adapters {
@@ -28,21 +29,33 @@ MpiTileExchange::MpiTileExchange(MPI_Comm comm) : comm_(comm) {
 int MpiTileExchange::worker() const { return rank_; }
 int MpiTileExchange::workers() const { return size_; }
 
-void MpiTileExchange::share(void* values, std::size_t bytes_per_point, const std::vector<std::size_t>& begin) const {
-  std::vector<int> count(static_cast<std::size_t>(size_)), offset(static_cast<std::size_t>(size_));
-  for (std::size_t w = 0; w < std::size_t(size_); ++w) {
-    if (begin[w + 1] - begin[w] > std::size_t(INT_MAX) || begin[w] > std::size_t(INT_MAX)) {
-      throw ResourceLimit("more than 2^31 - 1 points to gather over MPI", "split the cloud into parts of fewer points");
+void MpiTileExchange::all_to_all(std::vector<std::vector<unsigned char>>& buffers) const {
+  const std::size_t ranks = std::size_t(size_);
+  std::vector<std::uint64_t> out_size(ranks), in_size(ranks);
+  for (std::size_t v = 0; v < ranks; ++v) out_size[v] = buffers[v].size();
+  check(MPI_Alltoall(out_size.data(), 1, MPI_UINT64_T, in_size.data(), 1, MPI_UINT64_T, comm_), "MPI_Alltoall");
+  constexpr std::size_t kPiece = std::size_t(1) << 30;
+  std::vector<std::vector<unsigned char>> in(ranks);
+  std::vector<MPI_Request> requests;
+  for (std::size_t v = 0; v < ranks; ++v) {
+    if (v == std::size_t(rank_)) continue;
+    in[v].resize(in_size[v]);
+    for (std::size_t at = 0, piece = 0; at < in[v].size(); at += kPiece, ++piece) {
+      requests.emplace_back();
+      check(MPI_Irecv(in[v].data() + at, int(std::min(kPiece, in[v].size() - at)), MPI_BYTE, int(v), int(piece), comm_, &requests.back()),
+            "MPI_Irecv");
     }
-    count[w] = int(begin[w + 1] - begin[w]);
-    offset[w] = int(begin[w]);
+    for (std::size_t at = 0, piece = 0; at < buffers[v].size(); at += kPiece, ++piece) {
+      requests.emplace_back();
+      check(MPI_Isend(buffers[v].data() + at, int(std::min(kPiece, buffers[v].size() - at)), MPI_BYTE, int(v), int(piece), comm_,
+                      &requests.back()),
+            "MPI_Isend");
+    }
   }
-  MPI_Datatype point;
-  check(MPI_Type_contiguous(int(bytes_per_point), MPI_BYTE, &point), "MPI_Type_contiguous");
-  check(MPI_Type_commit(&point), "MPI_Type_commit");
-  const int code = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, values, count.data(), offset.data(), point, comm_);
-  MPI_Type_free(&point);
-  check(code, "MPI_Allgatherv");
+  check(MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  for (std::size_t v = 0; v < ranks; ++v) {
+    if (v != std::size_t(rank_)) buffers[v] = std::move(in[v]);
+  }
 }
 
 }  // namespace lsr::adapters

@@ -18,10 +18,8 @@
 #include "mesh/point_location.h"
 #include "mesh/vertex_fields.h"
 #include "mesh/vertices_near.h"
-#include "sampling/data_preparation.h"
-#include "sampling/local_sampling.h"
 #include "sampling/mesh_resolution_data.h"
-#include "sampling/unit_box_transform.h"
+#include "sampling/sampled_data.h"
 #include "stage_clock.h"
 #include "start/start_fields.h"
 #include "surface/closed_surface.h"
@@ -41,20 +39,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
 
-  // 1. The data, normalised: distinct finite points in the unit box, along a Z-order curve.
+  // 1-2. The data, normalised: distinct finite points in the unit box, along a Z-order curve;
+  // its local sampling: spacing, noise, normals, rims; isolated points left out.
   progress.update("unit box", -1.0);
   r.input_points = input.size();
-  DataPoints<D> in = distinct_finite_points(input);
-  r.skipped_points = input.size() - in.finite.size();
-  r.duplicate_points = in.finite.size() - in.points.size();
-  require_spanning(in.points);
-  auto box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
-  if constexpr (D == 3) in_z_order(box, in.points, in.kept);
-  NearestPointIndex<D> data(box.to_unit(in.points));
-  clock.end("unit box");
-
-  // 2. Its local sampling: spacing, noise, normals, rims; isolated points left out.
-  progress.update("sampling", -1.0);
   const double hole_radius = o.sampling.hole_radius >= 0.0 ? o.sampling.hole_radius : automatic_defaults(D).hole_radius;
   // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
   // unless asked for, every point does.
@@ -66,26 +54,27 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   const HeightFieldsAt fields = !anisotropic                       ? spanning
                                 : spanning == HeightFieldsAt::rims ? HeightFieldsAt::all_and_rims
                                                                    : HeightFieldsAt::all;
-  const SamplingTiles tiles{o.limits.tiles, o.limits.exchange.get()};
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
-  if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
-    // The box and every scale follow the data without them.
-    r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
-    require_spanning(in.points);
-    box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);
-    data = NearestPointIndex<D>(box.to_unit(in.points));
-    sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
+  std::optional<SampledData<D>> sampled;
+  if (o.limits.exchange && o.limits.exchange->workers() > 1) {
+    if constexpr (D == 3) sampled = shared_sampled_data(input, o, fields, progress, r, clock);
+    if constexpr (D == 2) throw InvalidInput("curves are reconstructed in one process", "reconstruct 2D clouds without workers");
+  } else {
+    sampled = sampled_data(input, o, fields, progress, r, clock);
   }
+  clock.end("sampling");
+  if (!sampled) {
+    r.status = ReconstructionStatus::shared;  // worker 0 carries on alone
+    return r;
+  }
+  DataPoints<D>& in = sampled->in;
+  const UnitBoxTransform<D>& box = sampled->box;
+  NearestPointIndex<D>& data = sampled->data;
+  LocalSampling<D>& sampling = sampled->sampling;
   const double spacing = median(sampling.spacing);
   r.noise = median(sampling.noise) / box.scale();
   r.scan_lines = sampling.scan_lines;
   r.spacing = spacing / box.scale();
   std::vector<double> point_scale = local_scales(sampling);
-  clock.end("sampling");
-  if (tiles.exchange && tiles.exchange->worker() != 0) {
-    r.status = ReconstructionStatus::shared;  // worker 0 carries on alone
-    return r;
-  }
 
   // 3. Where the data are denser than the mesh resolves, the rest reads a sample at its size.
   const LeftOut<D> left_out =
@@ -157,7 +146,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 9. The input's normals, then the surface: the fit through the data, or the front itself.
   const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
-  r.point_normals = in.input_normals(every_point_normals(left_out, normals), input.size());
+  r.point_normals = in.input_normals(every_point_normals(left_out, normals), r.input_points);
   progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
   if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.

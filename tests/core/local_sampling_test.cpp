@@ -4,13 +4,12 @@
 /// and workers give every point the same estimate.
 #include "lsrecon/testdata/shape_corpus.h"
 #include "sampling/local_sampling.h"
+#include "thread_exchange.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <condition_variable>
 #include <cstring>
-#include <mutex>
 #include <random>
 #include <thread>
 
@@ -156,49 +155,6 @@ TEST(LocalSampling, CurvatureOfRandomSphereSamplesConvergesLikeTheSquaredNeighbo
     previous = median(error);
   }
 }
-
-// Workers as threads of one process, sharing through memory: the protocol lsrecon-mpi runs over
-// MPI (every worker calls share in the same order, with its own copy of the values).
-class ThreadExchange : public TileExchange {
- public:
-  struct Meeting {
-    explicit Meeting(int n) : workers(n), published(std::size_t(n), nullptr) {}
-    void wait() {
-      std::unique_lock<std::mutex> lock(mutex);
-      const long round = rounds;
-      if (++arrived == workers) {
-        arrived = 0;
-        ++rounds;
-        all.notify_all();
-      } else {
-        all.wait(lock, [&] { return rounds != round; });
-      }
-    }
-    const int workers;
-    std::vector<void*> published;
-    std::mutex mutex;
-    std::condition_variable all;
-    int arrived = 0;
-    long rounds = 0;
-  };
-  ThreadExchange(int worker, Meeting& meeting) : worker_(worker), meeting_(meeting) {}
-  int worker() const override { return worker_; }
-  int workers() const override { return meeting_.workers; }
-  void share(void* values, std::size_t bytes, const std::vector<std::size_t>& begin) const override {
-    meeting_.published[std::size_t(worker_)] = values;
-    meeting_.wait();
-    for (int w = 0; w < workers(); ++w) {
-      if (w == worker_) continue;
-      const std::size_t from = begin[std::size_t(w)] * bytes, size = (begin[std::size_t(w) + 1] - begin[std::size_t(w)]) * bytes;
-      std::memcpy(static_cast<char*>(values) + from, static_cast<const char*>(meeting_.published[std::size_t(w)]) + from, size);
-    }
-    meeting_.wait();  // nobody changes its values before all have copied them
-  }
-
- private:
-  int worker_;
-  Meeting& meeting_;
-};
 
 template <class T, class A>
 bool same_bytes(const std::vector<T, A>& a, const std::vector<T, A>& b) {

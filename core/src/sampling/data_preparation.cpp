@@ -21,27 +21,33 @@ namespace lsr::detail {
 
 template <int D>
 void require_spanning(const Points<D>& points) {
+  Vec<D> mean = Vec<D>::Zero();
+  for (const auto& p : points) mean += p / double(points.size());
+  double extent = 0.0;
+  for (const auto& p : points) extent = std::max(extent, (p - mean).cwiseAbs().maxCoeff());
+  // Scaled to the extent: squares of 1e300 would overflow.
+  Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
+  if (extent > 0.0 && std::isfinite(extent)) {
+    for (const auto& p : points) cov += ((p - mean) / extent) * ((p - mean) / extent).transpose();
+  }
+  require_spread<D>(points.size(), mean, extent, cov);
+}
+
+template <int D>
+void require_spread(std::size_t distinct, const Vec<D>& mean, double extent, const Eigen::Matrix<double, D, D>& cov) {
   const char* shape = D == 2 ? "closed curve" : "closed surface";
-  if (points.empty()) {
+  if (distinct == 0) {
     throw InvalidInput("the point set is empty (no finite points)", "pass a cloud with points; NaN / infinite points are skipped");
   }
-  const std::size_t distinct = points.size();
   if (distinct < std::size_t(D + 1)) {
     throw InvalidInput(std::to_string(distinct) + " distinct point(s) cannot define a " + shape,
                        "pass at least " + std::to_string(D + 1) + " distinct points; a useful "
                        "reconstruction needs hundreds");
   }
-  Vec<D> mean = Vec<D>::Zero();
-  for (const auto& p : points) mean += p / double(points.size());
-  double extent = 0.0;
-  for (const auto& p : points) extent = std::max(extent, (p - mean).cwiseAbs().maxCoeff());
   if (!std::isfinite(extent) || !mean.allFinite()) {
     throw InvalidInput("the coordinates are too large for double precision arithmetic",
                        "rescale the points (coordinates below 1e150)");
   }
-  // Scaled to the extent: squares of 1e300 would overflow.
-  Eigen::Matrix<double, D, D> cov = Eigen::Matrix<double, D, D>::Zero();
-  for (const auto& p : points) cov += ((p - mean) / extent) * ((p - mean) / extent).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, D, D>> eig(cov);
   const double largest = eig.eigenvalues()[D - 1];
   // Relative thickness below 1e-6: flat to double precision after any realistic noise.
@@ -129,6 +135,8 @@ template DataPoints<2> distinct_finite_points<2>(const Points<2>&);
 template DataPoints<3> distinct_finite_points<3>(const Points<3>&);
 template void require_spanning<2>(const Points<2>& points);
 template void require_spanning<3>(const Points<3>& points);
+template void require_spread<2>(std::size_t, const Vec<2>&, double, const Eigen::Matrix<double, 2, 2>&);
+template void require_spread<3>(std::size_t, const Vec<3>&, double, const Eigen::Matrix<double, 3, 3>&);
 template bool drop_isolated<2>(const LocalSampling<2>& s, double factor, Points<2>& points, std::vector<std::size_t>& kept);
 template bool drop_isolated<3>(const LocalSampling<3>& s, double factor, Points<3>& points, std::vector<std::size_t>& kept);
 template std::vector<double> local_scales<2>(const LocalSampling<2>& s);

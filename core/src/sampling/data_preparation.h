@@ -33,6 +33,10 @@ DataPoints<D> distinct_finite_points(const Points<D>& input);
 // A closed curve needs (distinct) points spanning the plane, a closed surface points spanning space.
 template <int D>
 void require_spanning(const Points<D>& points);
+// The same from the points' count, mean, largest |x - mean| coordinate and covariance of
+// (x - mean) / extent (a cloud split among workers).
+template <int D>
+void require_spread(std::size_t distinct, const Vec<D>& mean, double extent, const Eigen::Matrix<double, D, D>& cov);
 
 // Drops the isolated points (nearest distinct neighbour beyond `factor` local spacings) from
 // points and kept; true if there were any.

@@ -112,12 +112,12 @@ double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std
 // creases of the clean double and triple tori, where the local ratio let 2 crease points in
 // as rims, and more steps followed), and scanner noise is a property of the scan.
 template <int D>
-double rim_smoothness(const LocalSampling<D>& sampling) {
+double rim_smoothness(const LocalSampling<D>& sampling, const TileRuns& tiles) {
   std::vector<double> ratio2(sampling.noise.size());
-  for (std::size_t i = 0; i < ratio2.size(); ++i) {
+  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
     ratio2[i] = std::pow(sampling.noise[i] / std::max(sampling.spacing[i], 1e-300), 2);
   }
-  return LocalSampling<D>::kRimSmoothness - 0.6 * median(std::move(ratio2));
+  return LocalSampling<D>::kRimSmoothness - 0.6 * tiles.median(ratio2);
 }
 
 // Of the open points (kRimGap free among their k nearest: a superset, as fewer neighbours
@@ -172,7 +172,7 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
   }
   tiles.share(wide);
   std::vector<char> rim(p.size(), 0);
-  const double smoothness = rim_smoothness(sampling);
+  const double smoothness = rim_smoothness(sampling, tiles);
   for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
     const Index* around = &neighbours[(i - tiles.first()) * std::size_t(k)];
     if (!wide[i] || mean_agreement(normals, around, k, i) < smoothness) continue;
@@ -225,7 +225,8 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
   const Points<D>& p = data.points();
   Points<D> probes;
   std::vector<std::size_t> which;
-  for (std::size_t i = (tiles.first() + kStride - 1) / kStride * kStride; i < tiles.end(); i += kStride) {
+  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
+    if (tiles.global(i) % kStride != 0) continue;
     probes.push_back(p[i]);
     which.push_back(i);
   }
@@ -240,7 +241,7 @@ bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& 
     pca(p, &nearest[std::size_t(j) * wide], wide, thickness, normal);
     if (std::abs(normal.dot(s.normals[which[std::size_t(j)]])) < std::sqrt(0.5)) ++disagree;
   }
-  const std::size_t probed = (p.size() + kStride - 1) / kStride;
+  const std::size_t probed = (tiles.global_size(p.size()) + kStride - 1) / kStride;
   return double(tiles.sum(disagree)) > LocalSampling<D>::kScanLineDisagreement * double(probed);
 }
 
@@ -282,11 +283,10 @@ void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Ind
                          const TileRuns& tiles, ScanLines mode) {
   constexpr int wide = LocalSampling<D>::kHoleNeighbours;
   const Points<D>& p = data.points();
-  if (p.size() < std::size_t(wide)) return;
+  if (tiles.global_size(p.size()) < std::size_t(wide)) return;
   if (mode == ScanLines::no) return;
   if (mode == ScanLines::automatic) {
-    tiles.share(elongation);
-    if (!(median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
+    if (!(tiles.median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
   }
   s.scan_lines = true;
   std::vector<double> hole(p.size()), noise(p.size());
@@ -329,7 +329,7 @@ void widen_across_curve_gaps(const NearestPointIndex<2>& data, const LargeVector
                              LocalSampling<2>& s, const Progress& progress, const TileRuns& tiles) {
   constexpr int wide = LocalSampling<2>::kHoleNeighbours;
   const Points<2>& p = data.points();
-  if (p.size() < std::size_t(wide)) return;
+  if (tiles.global_size(p.size()) < std::size_t(wide)) return;
   std::vector<double> half_gap(p.size());
   over_wide_neighbourhoods(data, threads, progress, tiles, [&](std::size_t i, const Index* around) {
     half_gap[i] = 0.5 * widest_gap_between(p, around, wide, i, s.normals[i]);
@@ -393,7 +393,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   if (rims) s.rim = confirmed_rims(data, open, s, neighbours, k, t, tiles);
   progress.update("sampling", -1.0);
   // 48 bytes a point in 3D: not even allocated for a closed cloud without rims.
-  if (all || std::find(s.rim.begin(), s.rim.end(), 1) != s.rim.end()) {
+  if (all || (rims && tiles.sum(long(std::count(s.rim.begin() + long(first), s.rim.begin() + long(tiles.end()), 1))) > 0)) {
     s.height_fields.resize(p.size());
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(t)
     for (long r = 0; r < n; ++r) {

@@ -21,6 +21,7 @@
 #include "lsrecon/core/progress.h"
 #include "lsrecon/core/reconstruction_options.h"
 #include "lsrecon/core/tile_exchange.h"
+#include "sampling/cloud_halo.h"
 
 #include <array>
 #include <vector>
@@ -108,6 +109,7 @@ enum class HeightFieldsAt {
 struct SamplingTiles {
   int tiles = 1;                           ///< runs along the points' order; at least one per worker
   const TileExchange* exchange = nullptr;  ///< null: this process alone
+  const CloudHalo* halo = nullptr;         ///< the index holds this worker's points and halo; null: every point
 };
 
 /// @brief Estimates the sampling scales of every point of the index. Exact duplicates are skipped

@@ -12,10 +12,6 @@ namespace lsr {
 
 template <int D>
 UnitBoxTransform<D> UnitBoxTransform<D>::fit(const Points<D>& points, double margin) {
-  if (!(margin >= 0.0 && margin < 0.5)) {
-    throw InvalidInput("box margin " + std::to_string(margin) + " is outside [0, 0.5)",
-                       "use a margin such as 0.1");
-  }
   require_valid_points(points, "unit box fit");
   Vec<D> lo = points[0];
   Vec<D> hi = points[0];
@@ -23,11 +19,20 @@ UnitBoxTransform<D> UnitBoxTransform<D>::fit(const Points<D>& points, double mar
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+  return fit_bounds(lo, hi, points.size(), margin);
+}
+
+template <int D>
+UnitBoxTransform<D> UnitBoxTransform<D>::fit_bounds(const Vec<D>& lo, const Vec<D>& hi, std::size_t count, double margin) {
+  if (!(margin >= 0.0 && margin < 0.5)) {
+    throw InvalidInput("box margin " + std::to_string(margin) + " is outside [0, 0.5)",
+                       "use a margin such as 0.1");
+  }
   const double extent = (hi - lo).maxCoeff();
   // Relative test: coordinates at 1e6 with a spread of 1e-9 are coincident in double precision.
   const double magnitude = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   if (!(extent > 1e-12 * std::max(1.0, magnitude))) {
-    throw InvalidInput("all " + std::to_string(points.size()) + " points coincide",
+    throw InvalidInput("all " + std::to_string(count) + " points coincide",
                        "a reconstruction needs points that span a curve or surface");
   }
   UnitBoxTransform t;
@@ -42,9 +47,15 @@ UnitBoxTransform<D> UnitBoxTransform<D>::fit_ball(const Points<D>& points, doubl
     throw InvalidInput("ball radius " + std::to_string(radius) + " is outside (0, 0.5]",
                        "use a radius such as 0.4");
   }
-  UnitBoxTransform t = fit(points, 0.0);  // validates and finds the bounding-box centre
+  const UnitBoxTransform t = fit(points, 0.0);  // validates and finds the bounding-box centre
   double reach = 0.0;
   for (const auto& p : points) reach = std::max(reach, (p - t.center_).norm());
+  return t.with_ball(reach, radius);
+}
+
+template <int D>
+UnitBoxTransform<D> UnitBoxTransform<D>::with_ball(double reach, double radius) const {
+  UnitBoxTransform t = *this;
   t.scale_ = radius / reach;
   return t;
 }

@@ -21,6 +21,10 @@ class UnitBoxTransform {
   /// of the given radius around the box centre (0.5, ..., 0.5).
   /// @throw InvalidInput as fit(), or if radius is not in (0, 0.5].
   static UnitBoxTransform fit_ball(const Points<D>& points, double radius);
+  /// @brief fit() from the bounding box [lo, hi] of `count` points (a cloud split among workers).
+  static UnitBoxTransform fit_bounds(const Vec<D>& lo, const Vec<D>& hi, std::size_t count, double margin);
+  /// @brief fit_ball() from this box's centre and the farthest point's distance to it.
+  UnitBoxTransform with_ball(double reach, double radius) const;
 
   Vec<D> to_unit(const Vec<D>& x) const { return (x - center_) * scale_ + Vec<D>::Constant(0.5); }
   Vec<D> from_unit(const Vec<D>& y) const { return (y - Vec<D>::Constant(0.5)) / scale_ + center_; }

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file mpi_tile_exchange.h
-/// @brief The tiles of the sampling stage (lsrecon/core/tile_exchange.h) shared among the ranks
-/// of an MPI communicator (Debian's Open MPI): each rank estimates its own run of points, then
-/// an all-gather gives every rank all of them. Rank 0 carries on with the mesh, the front and
-/// the fit. A separate library (lsrecon::adapters_mpi), so that lsrecon::adapters needs no MPI.
+/// @brief The sampling stage (lsrecon/core/tile_exchange.h) shared among the ranks of an MPI
+/// communicator (Debian's Open MPI): each rank holds its run of the cloud and a halo, and the
+/// ranks exchange points and values with point-to-point messages. Rank 0 carries on with the
+/// mesh, the front and the fit. A separate library (lsrecon::adapters_mpi), so that
+/// lsrecon::adapters needs no MPI.
 #pragma once
 
 #include "lsrecon/core/tile_exchange.h"
@@ -18,9 +19,9 @@ class MpiTileExchange : public TileExchange {
   explicit MpiTileExchange(MPI_Comm comm = MPI_COMM_WORLD);
   int worker() const override;
   int workers() const override;
-  /// MPI_Allgatherv in place, counted in points (a contiguous type of bytes_per_point bytes), so
-  /// that no count overflows MPI's int below 2^31 points per rank.
-  void share(void* values, std::size_t bytes_per_point, const std::vector<std::size_t>& begin) const override;
+  /// The sizes by MPI_Alltoall, the bytes by MPI_Isend / MPI_Irecv in pieces of at most 1 GiB
+  /// (MPI counts are ints).
+  void all_to_all(std::vector<std::vector<unsigned char>>& buffers) const override;
 
  private:
   MPI_Comm comm_;

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file tile_exchange.h
-/// @brief Tiles: the per-point work of the sampling stage (nearest neighbours, local PCA and
-/// height fields, empty discs, rims: two thirds of a 10M-point scan's time) split into runs of
-/// consecutive points along the data's Z-order curve, each a compact piece of space. Workers
-/// (MPI ranks, say) each compute their own run of tiles; TileExchange::share then gives every
-/// worker the whole per-point result, and worker 0 carries on with the mesh, the front and
-/// the fit. Every point's result is what one process computes (the same neighbours, the same
-/// arithmetic), so the output does not depend on the tiles or the workers. docs/how-it-works.md,
-/// "Tiles and MPI", says what is shared and what is not yet.
+/// @brief Workers (MPI ranks, say) that share the sampling stage: nearest neighbours, local
+/// PCA and height fields, empty discs, rims (two thirds of a 10M-point scan's time). Each worker
+/// passes reconstruct() its share of the cloud (consecutive runs of the input, in worker order);
+/// the workers sort the cloud along its Z-order curve among them, each keeps a run of it plus
+/// a margin of its neighbours (the halo), estimates its own points and exchanges the values the
+/// others' halos read. Worker 0 then receives the cloud's sampling and carries on with the mesh,
+/// the front and the fit. Every point's result is what one process computes (the same
+/// neighbours, the same arithmetic), so the output does not depend on the workers.
+/// docs/how-it-works.md, "Tiles and MPI", says what is shared and what is not yet.
 #pragma once
 
 #include <cstddef>
@@ -15,18 +16,17 @@
 
 namespace lsr {
 
-/// @brief How workers share per-point results. The default is one worker, which has nothing
-/// to share.
+/// @brief How workers exchange bytes. The default is one worker, which has nothing to send.
 class TileExchange {
  public:
   virtual ~TileExchange() = default;
   /// This worker, in [0, workers()). Worker 0 carries on past the shared stages.
   virtual int worker() const { return 0; }
   virtual int workers() const { return 1; }
-  /// A gather to all: values holds bytes_per_point bytes for each point, and worker w has
-  /// filled those of the points [begin[w], begin[w + 1]) (begin has workers() + 1 entries).
-  /// Afterwards every worker holds every point's. Called by every worker in the same order.
-  virtual void share(void* /*values*/, std::size_t /*bytes_per_point*/, const std::vector<std::size_t>& /*begin*/) const {}
+  /// All to all: buffers has workers() entries, buffers[v] the bytes for worker v (this
+  /// worker's own entry included); afterwards buffers[v] holds the bytes worker v sent this
+  /// one. Called by every worker in the same order.
+  virtual void all_to_all(std::vector<std::vector<unsigned char>>& /*buffers*/) const {}
 };
 
 }  // namespace lsr
