@@ -32,9 +32,11 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -67,7 +69,7 @@ Input generate(const Cli& c) {
   return in;
 }
 
-Input read_input(const Cli& c) {
+Input read_input(const Cli& c, lsr::adapters::FileShare share) {
   Input in;
   const std::string ext = lsr::adapters::file_extension(c.input);
   if (lsr::adapters::has_role(ext, lsr::adapters::FileRole::image_input)) {
@@ -75,9 +77,10 @@ Input read_input(const Cli& c) {
     in.dim = 2;
     return in;
   }
-  lsr::adapters::PointFile file = lsr::adapters::read_point_file(c.input);
+  lsr::adapters::PointFile file = lsr::adapters::read_point_file(c.input, share);
   in.points = std::move(file.points);
   in.skipped = file.skipped;
+  in.other_ranks = file.other_rows;
   in.dim = file.planar_text ? 2 : lsr::adapters::detect_dimension(in.points);
   return in;
 }
@@ -211,18 +214,57 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
   return 0;
 }
 
+// lsrecon-mpi: 2 if every rank's points lie in one plane z = const, as detect_dimension says
+// of the whole cloud; the non-finite points of every rank's share counted in rank 0's.
+int dimension_over_ranks(const lsr::TileExchange& x, Input& in) {
+  struct Share {
+    double lo, hi;
+    std::size_t skipped;
+  };
+  Share mine{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), in.skipped};
+  for (const auto& p : in.points) mine = {std::min(mine.lo, p.z()), std::max(mine.hi, p.z()), in.skipped};
+  std::vector<std::vector<unsigned char>> bytes(std::size_t(x.workers()), std::vector<unsigned char>(sizeof(Share)));
+  for (auto& b : bytes) std::memcpy(b.data(), &mine, sizeof(Share));
+  x.all_to_all(bytes);
+  Share all{mine.lo, mine.hi, 0};
+  for (const auto& b : bytes) {
+    Share each;
+    std::memcpy(&each, b.data(), sizeof(Share));
+    all = {std::min(all.lo, each.lo), std::max(all.hi, each.hi), all.skipped + each.skipped};
+  }
+  if (x.worker() == 0) {
+    in.other_ranks -= all.skipped - in.skipped;
+    in.skipped = all.skipped;
+  }
+  return in.dim == 2 || all.lo == all.hi ? 2 : 3;
+}
+
 // The points as the solver gets them: read (or generated), their dimension settled, the
 // statistical outliers left out. With files, the points are also saved if asked.
 Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
   lsr::demos::Stopwatch clock;
-  Input in = c.demo.empty() ? read_input(c) : generate(c);
+  // lsrecon-mpi: each rank reads its share of the points, in rank order (tile_exchange.h).
+  const lsr::TileExchange* x = c.solver.limits.exchange.get();
+  const lsr::adapters::FileShare share{x ? std::size_t(x->worker()) : 0, x ? std::size_t(x->workers()) : 1};
+  if (share.parts > 1 && (c.statistical.mean_k > 0 || !c.save_points.empty())) {
+    throw lsr::InvalidInput("--statistical-outliers and --save-points read the whole cloud, which lsrecon-mpi splits among its ranks",
+                            "run lsrecon for them");
+  }
+  Input in = c.demo.empty() ? read_input(c, share) : generate(c);
+  if (!c.demo.empty() && share.parts > 1) {
+    const std::size_t n = in.points.size();
+    lsr::Points<3> part(in.points.begin() + long(share.part * n / share.parts), in.points.begin() + long((share.part + 1) * n / share.parts));
+    in.other_ranks = n - part.size();
+    in.points = std::move(part);
+  }
+  if (share.parts > 1) in.dim = dimension_over_ranks(*x, in);
   if (files && !c.save_points.empty()) lsr::adapters::write_points(files->save_points, in.points);
   read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;
   const std::string out_ext = lsr::adapters::file_extension(c.output);
   // Three distinct points or fewer are flat whatever they sample: the output decides, the
   // solver then says how many points a closed curve or surface needs.
-  if (c.dim == 0 && distinct_points(in.points) <= 3) in.dim = is_curve_output(out_ext) ? 2 : 3;
+  if (c.dim == 0 && share.parts == 1 && distinct_points(in.points) <= 3) in.dim = is_curve_output(out_ext) ? 2 : 3;
   if (in.dim == 2 && is_mesh_output(out_ext)) {
     throw lsr::InvalidInput("the input is planar (2D), so the result is curves, not a mesh",
                             "write .svg or .txt (closed curves in the plane); a closed surface needs points that are not all in one plane");
@@ -243,13 +285,6 @@ Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
       std::fprintf(stderr, "lsrecon: pcl::StatisticalOutlierRemoval (k = %d, %g deviations) left out %zu point(s), %.2f s\n",
                    c.statistical.mean_k, c.statistical.stddev_mul, in.statistical_outliers, clock.lap());
     }
-  }
-  // lsrecon-mpi: each rank passes its share of the points, in rank order (tile_exchange.h).
-  if (const auto& x = c.solver.limits.exchange; x && x->workers() > 1) {
-    const std::size_t n = in.points.size(), w = std::size_t(x->worker()), k = std::size_t(x->workers());
-    lsr::Points<3> share(in.points.begin() + long(w * n / k), in.points.begin() + long((w + 1) * n / k));
-    in.other_ranks = n - share.size();
-    in.points = std::move(share);
   }
   return in;
 }
@@ -339,9 +374,8 @@ void wait_for_all_ranks() {
   for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;) usleep(20000);
 }
 
-// lsrecon-mpi: every rank parses the same command line, reads the same input (from shared
-// storage) and keeps its share; rank 0 runs lsrecon, the others share the sampling with it and
-// stop. A rank
+// lsrecon-mpi: every rank parses the same command line and reads its share of the input (from
+// shared storage); rank 0 runs lsrecon, the others share the sampling with it and stop. A rank
 // that fails aborts them all, as the others would wait for it.
 int main(int argc, char** argv) {
   int provided = 0;

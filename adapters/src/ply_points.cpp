@@ -54,12 +54,30 @@ class RowReader {
     }
   }
 
-  // The element's rows, the values of properties `wanted` (index per property, -1 if not) in out.
+  // The element's rows [first, end) (all by default), the values of properties `wanted` (index
+  // per property, -1 if not) in out; the rows before are skipped, by a seek where they are bytes
+  // of one size.
   template <class Row>
-  void rows(const PlyElement& e, const std::vector<int>& wanted, Row row) {
+  void rows(const PlyElement& e, const std::vector<int>& wanted, Row row, double first = 0, double end = -1) {
     std::array<double, 3> out{};
     if (e.properties.empty()) return;  // rows of nothing, however many (a fuzzer's 6.7e13 took minutes)
-    for (double r = 0; r < e.count; ++r) {
+    if (end < 0) end = e.count;
+    const bool fixed = std::none_of(e.properties.begin(), e.properties.end(), [](const PlyProperty& p) { return p.is_list(); });
+    if (!ascii_ && fixed && first > 0) {
+      in_.seekg(std::streamoff(first * e.minimum_row_bytes(false)), std::ios::cur);
+      if (!in_) corrupt(path_, "the PLY data ends before the last vertex");
+    } else {
+      for (double r = 0; r < first; ++r) {
+        for (const PlyProperty& p : e.properties) {
+          if (p.is_list()) {
+            skip_list(p);
+          } else {
+            value(p.type);
+          }
+        }
+      }
+    }
+    for (double r = first; r < end; ++r) {
       for (std::size_t p = 0; p < e.properties.size(); ++p) {
         if (e.properties[p].is_list()) {
           skip_list(e.properties[p]);
@@ -82,7 +100,7 @@ class RowReader {
 
 }  // namespace
 
-PointFile read_ply_points(const std::string& path) {
+PointFile read_ply_points(const std::string& path, FileShare share) {
   std::ifstream in;
   const double size = open_sized(path, in);
   const PlyHeader h = parse_ply_header(path, in);
@@ -115,7 +133,9 @@ PointFile read_ply_points(const std::string& path) {
     if (found != 3) corrupt(path, "the PLY vertex element has no x, y and z (or has one twice)");
     if (e.count == 0) break;
     PointFile out;
-    out.points.reserve(std::size_t(e.count));
+    const std::size_t rows = std::size_t(e.count), first = share.part * rows / share.parts, end = (share.part + 1) * rows / share.parts;
+    out.other_rows = rows - (end - first);
+    out.points.reserve(end - first);
     reader.rows(e, wanted, [&](const std::array<double, 3>& c) {
       const Vec<3> p(c[0], c[1], c[2]);
       if (p.allFinite()) {
@@ -123,7 +143,7 @@ PointFile read_ply_points(const std::string& path) {
       } else {
         ++out.skipped;
       }
-    });
+    }, double(first), double(end));
     return out;
   }
   corrupt(path, "no vertex element (or an empty one) with x, y and z in the PLY header");

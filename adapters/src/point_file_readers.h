@@ -20,6 +20,6 @@ PointFile read_pcd_points(const std::string& path);
 /// @brief The x, y, z of the vertex element of a PLY file (ascii, binary_little_endian or
 /// binary_big_endian; any property type; elements before the vertices are skipped).
 /// @throw lsr::Error as read_pcd_points.
-PointFile read_ply_points(const std::string& path);
+PointFile read_ply_points(const std::string& path, FileShare share = {});
 
 }  // namespace lsr::adapters::detail

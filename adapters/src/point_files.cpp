@@ -84,7 +84,18 @@ int detect_dimension(const Points<3>& points) {
   return planar && !points.empty() ? 2 : 3;
 }
 
-PointFile read_point_file(const std::string& path) {
+PointFile read_point_file(const std::string& path, FileShare share) {
+  if (share.parts > 1 && file_extension(path) != "ply") {
+    // Read whole and cut: the non-finite points count in the first part.
+    PointFile all = read_point_file(path);
+    const std::size_t n = all.points.size(), first = share.part * n / share.parts, end = (share.part + 1) * n / share.parts;
+    PointFile out;
+    out.points.assign(all.points.begin() + long(first), all.points.begin() + long(end));
+    out.skipped = share.part == 0 ? all.skipped : 0;
+    out.other_rows = n + all.skipped - out.points.size() - out.skipped;
+    out.planar_text = all.planar_text;
+    return out;
+  }
   require_regular_file(path);
   const std::string ext = file_extension(path);
   if (!has_role(ext, FileRole::point_input)) {
@@ -92,7 +103,7 @@ PointFile read_point_file(const std::string& path) {
                 "use " + extensions(FileRole::point_input) + " (or an image for 2D: " + extensions(FileRole::image_input) + ")");
   }
   if (ext == "pcd") return detail::read_pcd_points(path);
-  if (ext == "ply") return detail::read_ply_points(path);
+  if (ext == "ply") return detail::read_ply_points(path, share);
   check_declared_size(path);
   if (ext == "obj" || ext == "off" || ext == "stl") {
     PointFile out;

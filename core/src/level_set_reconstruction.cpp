@@ -39,8 +39,9 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
 
-  // 1-2. The data, normalised: distinct finite points in the unit box, along a Z-order curve;
-  // its local sampling: spacing, noise, normals, rims; isolated points left out.
+  // 1-3. The data, normalised: distinct finite points in the unit box, along a Z-order curve;
+  // its local sampling: spacing, noise, normals, rims; isolated points left out. Where the data
+  // are denser than the mesh resolves, the rest reads a sample at its size.
   progress.update("unit box", -1.0);
   r.input_points = input.size();
   const double hole_radius = o.sampling.hole_radius >= 0.0 ? o.sampling.hole_radius : automatic_defaults(D).hole_radius;
@@ -66,19 +67,16 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     r.status = ReconstructionStatus::shared;  // worker 0 carries on alone
     return r;
   }
-  DataPoints<D>& in = sampled->in;
+  const DataPoints<D>& in = sampled->in;
   const UnitBoxTransform<D>& box = sampled->box;
-  NearestPointIndex<D>& data = sampled->data;
-  LocalSampling<D>& sampling = sampled->sampling;
-  const double spacing = median(sampling.spacing);
-  r.noise = median(sampling.noise) / box.scale();
+  const NearestPointIndex<D>& data = sampled->data;
+  const LocalSampling<D>& sampling = sampled->sampling;
+  std::vector<double>& point_scale = sampled->point_scale;  // raised where the mesh cannot resolve it
+  const LeftOut<D>& left_out = sampled->left_out;
+  const double spacing = sampled->spacing;
+  r.noise = sampled->noise / box.scale();
   r.scan_lines = sampling.scan_lines;
   r.spacing = spacing / box.scale();
-  std::vector<double> point_scale = local_scales(sampling);
-
-  // 3. Where the data are denser than the mesh resolves, the rest reads a sample at its size.
-  const LeftOut<D> left_out =
-      keep_mesh_resolution(data, sampling, point_scale, local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads);
 
   // 4. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
   AdaptiveMesh<D> adaptive;
@@ -146,7 +144,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 9. The input's normals, then the surface: the fit through the data, or the front itself.
   const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
-  r.point_normals = in.input_normals(every_point_normals(left_out, normals), r.input_points);
+  if (!in.kept.empty()) r.point_normals = in.input_normals(every_point_normals(left_out, normals), r.input_points);
   progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
   if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.

@@ -271,6 +271,51 @@ TEST_F(PointFiles, SavedPointsAreReadBackExactly) {
   }
 }
 
+// lsrecon-mpi's ranks each read a part: the parts, in order, are the file's points, and each
+// knows how many rows the others hold. Binary PLY (a seek past the rows before, and a face
+// element before the vertices), text PLY (rows before parsed and dropped) and a text file (read
+// whole and cut), with a NaN row.
+TEST_F(PointFiles, ThePartsOfAFileAreItsPointsInOrder) {
+  Points<3> p = points();
+  p.resize(10);
+  p[4] = Vec<3>(std::nan(""), 0, 0);
+  const std::string binary = file("parts.ply", [&](std::ofstream& f) {
+    f << ply_header("binary_little_endian", p.size(), "double", "element face 1\nproperty list uchar int vertex_indices\n");
+    put(f, std::uint8_t(3));
+    for (int i = 0; i < 3; ++i) put(f, std::int32_t(i));
+    for (const auto& q : p) {
+      for (int k = 0; k < 3; ++k) put(f, q[k]);
+    }
+  });
+  const std::string ascii = file("parts-ascii.ply", [&](std::ofstream& f) {
+    f << ply_header("ascii", p.size(), "float64");
+    f.precision(17);
+    for (const auto& q : p) f << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+  });
+  const std::string text = file("parts.xyz", [&](std::ofstream& f) {
+    f.precision(17);
+    for (const auto& q : p) f << q.x() << ' ' << q.y() << ' ' << q.z() << '\n';
+  });
+  Points<3> finite;
+  for (const auto& q : p) {
+    if (q.allFinite()) finite.push_back(q);
+  }
+  for (const std::string& path : {binary, ascii, text}) {
+    for (const std::size_t parts : {1, 3, 4}) {
+      Points<3> all;
+      std::size_t skipped = 0;
+      for (std::size_t part = 0; part < parts; ++part) {
+        const PointFile f = read_point_file(path, {part, parts});
+        EXPECT_EQ(f.points.size() + f.skipped + f.other_rows, p.size()) << path << " " << part << "/" << parts;
+        all.insert(all.end(), f.points.begin(), f.points.end());
+        skipped += f.skipped;
+      }
+      EXPECT_EQ(skipped, 1u) << path;
+      expect_points(PointFile{all, 0, false, 0}, finite);
+    }
+  }
+}
+
 TEST_F(PointFiles, EveryMeshFormatLsreconWritesIsReadBack) {
   LevelSetMesh<3> tetrahedron;
   tetrahedron.vertices = {Vec<3>(1.0 / 3.0, 0, 0), Vec<3>(1e6 + 0.1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};

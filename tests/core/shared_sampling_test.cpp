@@ -58,10 +58,11 @@ TEST(WorkerCollectives, TheMedianOverWorkersIsTheMedianOfAllValues) {
   }
 }
 
-// Worker 0's sampling equals one process's, every byte: the points and their input indices, the
-// box, every point's estimate and the counts. The cloud takes every path: scan lines with a hole
-// (rims, height fields), isolated points (dropped, then the box and every estimate again),
-// copies whose first copy another worker holds, NaN points, and a worker without points.
+// Worker 0's sample equals one process's, every byte: the box, the medians, the sample's points,
+// their estimates and scales, the points each stands for, and the counts. The cloud takes every
+// path: scan lines with a hole (rims, height fields), isolated points (dropped, then the box and
+// every estimate again), copies whose first copy another worker holds, NaN points, a worker
+// without points, and a mesh coarser than the data (the sample thinned).
 TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
   std::mt19937 rng(11);
   std::normal_distribution<double> noise(0.0, 1.0);
@@ -77,12 +78,14 @@ TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
   cloud.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5);
   for (std::size_t i = 0; i < 200; i += 2) cloud.push_back(cloud[i]);  // copies, at the end
   ReconstructionOptions o;
+  o.mesh.max_resolution = 32;
   ReconstructionResult<3> one_r;
   detail::StageClock one_clock(one_r.seconds, one_r.stages);
   const SampledData<3> one = detail::sampled_data<3>(cloud, o, HeightFieldsAt::all_and_rims, Progress(), one_r, one_clock);
   ASSERT_GT(one_r.outlier_points, 0u);
   ASSERT_GT(one_r.duplicate_points, 0u);
   ASSERT_NE(std::count(one.sampling.rim.begin(), one.sampling.rim.end(), 1), 0);
+  ASSERT_FALSE(one.left_out.represented.empty());  // thinned
 
   constexpr int kWorkers = 3;
   std::vector<std::optional<SampledData<3>>> each(kWorkers);
@@ -101,12 +104,13 @@ TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
   EXPECT_FALSE(each[1].has_value());
   EXPECT_FALSE(each[2].has_value());
   const SampledData<3>& two = *each[0];
-  EXPECT_TRUE(same_bytes(one.in.points, two.in.points));
-  EXPECT_EQ(one.in.kept, two.in.kept);
-  EXPECT_EQ(one.in.finite, two.in.finite);
-  EXPECT_EQ(one.in.first, two.in.first);
   EXPECT_EQ(one.box.scale(), two.box.scale());
+  EXPECT_EQ(one.box.center(), two.box.center());
+  EXPECT_EQ(one.spacing, two.spacing);
+  EXPECT_EQ(one.noise, two.noise);
   EXPECT_TRUE(same_bytes(one.data.points(), two.data.points()));
+  EXPECT_TRUE(same_bytes(one.point_scale, two.point_scale));
+  EXPECT_EQ(one.left_out.represented, two.left_out.represented);
   EXPECT_TRUE(same_bytes(one.sampling.spacing, two.sampling.spacing));
   EXPECT_TRUE(same_bytes(one.sampling.noise, two.sampling.noise));
   EXPECT_TRUE(same_bytes(one.sampling.normals, two.sampling.normals));

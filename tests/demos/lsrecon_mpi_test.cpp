@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file lsrecon_mpi_test.cpp
-/// @brief lsrecon-mpi under mpirun -np 2 on one machine: the ranks share the sampling's tiles and
-/// rank 0 writes what lsrecon --tiles 2 writes in one process, byte for byte; a rank that fails
-/// stops them all and nothing is written.
+/// @brief lsrecon-mpi under mpirun -np 2 on one machine: the ranks split the cloud and share the
+/// sampling, and rank 0 writes what lsrecon --tiles 2 writes in one process, byte for byte; a
+/// rank that fails stops them all and nothing is written.
 #include "cli_fixture.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/testdata/simulated_scan.h"
@@ -26,25 +26,36 @@ const std::string kMpiRun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CON
                             " -np 2 --oversubscribe --bind-to none " LSRECON_MPI_CLI;
 
 // A line scan from above of the double torus: scan lines (their wide neighbourhoods and empty
-// discs), an unseen underside (rims), genus 2. Every path of the sampling is shared.
+// discs), an unseen underside (rims), genus 2, with isolated points (dropped, then the sampling
+// again) and copies at the end of the file (their first copies in the other rank's share).
+// Each rank reads half the file, the ranks sort the cloud between them and each estimates its
+// run with a halo; rank 0 gets the sample. At --max-resolution 48 the sample is thinned (each
+// run's, with a halo of its own).
 TEST_F(Cli, MpiRanksShareTheTilesAndRankZeroWritesWhatOneProcessWrites) {
   lsr::ScannerSettings scanner;
   scanner.from_above = true;
   scanner.lines = 40;
   scanner.samples_per_line = 400;
-  lsr::adapters::write_points(path("scan.ply"), lsr::simulate_scan(lsr::make_test_shape("double-torus"), scanner).points);
+  lsr::Points<3> cloud = lsr::simulate_scan(lsr::make_test_shape("double-torus"), scanner).points;
+  for (int k = 0; k < 4; ++k) cloud.emplace_back(-1.0 + 0.5 * k, 1.5, 0.9);
+  for (std::size_t i = 0; i < 300; i += 3) cloud.push_back(cloud[i]);
+  lsr::adapters::write_points(path("scan.ply"), cloud);
 
-  const CliRun one = run(path("scan.ply") + " " + path("one.ply") + " --tiles 2 --report " + path("one.json"));
-  ASSERT_EQ(one.status, 0) << one.output;
-  const CliRun two = run_program(kMpiRun, path("scan.ply") + " " + path("two.ply") + " --report " + path("two.json"));
-  ASSERT_EQ(two.status, 0) << two.output;
-  EXPECT_NE(two.output.find("rank 1 of 2 shared its tiles, peak memory"), std::string::npos) << two.output;
-  EXPECT_EQ(read("one.ply"), read("two.ply"));
-  expect_closed_mesh(path("two.ply"), 2);
-  const nlohmann::json a = nlohmann::json::parse(read("one.json")), b = nlohmann::json::parse(read("two.json"));
-  EXPECT_EQ(a["time_steps"], b["time_steps"]);
-  EXPECT_EQ(a["spacing_input_units"], b["spacing_input_units"]);
-  EXPECT_EQ(a["noise_input_units"], b["noise_input_units"]);
+  for (const std::string options : {"", " --max-resolution 48"}) {
+    const CliRun one = run(path("scan.ply") + " " + path("one.ply") + " --tiles 2 --report " + path("one.json") + options);
+    ASSERT_EQ(one.status, 0) << one.output;
+    const CliRun two = run_program(kMpiRun, path("scan.ply") + " " + path("two.ply") + " --report " + path("two.json") + options);
+    ASSERT_EQ(two.status, 0) << two.output;
+    EXPECT_NE(two.output.find("rank 1 of 2 shared its tiles, peak memory"), std::string::npos) << two.output;
+    EXPECT_EQ(read("one.ply"), read("two.ply")) << options;
+    expect_closed_mesh(path("two.ply"), 2);
+    const nlohmann::json a = nlohmann::json::parse(read("one.json")), b = nlohmann::json::parse(read("two.json"));
+    for (const char* key : {"time_steps", "spacing_input_units", "noise_input_units", "input_points", "outlier_points", "duplicate_points"}) {
+      EXPECT_EQ(a[key], b[key]) << key << options;
+    }
+    EXPECT_GT(b["outlier_points"].get<int>(), 0);
+    EXPECT_EQ(b["duplicate_points"].get<int>(), 100);
+  }
 }
 
 TEST_F(Cli, AFailingMpiRankStopsThemAllAndNothingIsWritten) {

@@ -29,12 +29,14 @@ Vec<D> vec(const std::array<double, D>& a) {
   return v;
 }
 
-// One cut of the curve per worker: the keys at regular ranks among every worker's regular samples.
+// One cut of the curve per worker: the keys at regular ranks among every worker's s regular
+// samples (parallel sorting by regular sampling). A run then holds a share plus at most about
+// n / s points: s = 16 K, a sixteenth of a share.
 template <int D>
 std::vector<std::uint64_t> cuts_of(const std::vector<Record<D>>& sorted, const TileExchange* x) {
-  const std::size_t workers = workers_of(x);
+  const std::size_t workers = workers_of(x), s = 16 * workers;
   std::vector<std::uint64_t> samples;
-  for (std::size_t j = 1; j < workers * 4 && !sorted.empty(); ++j) samples.push_back(sorted[j * sorted.size() / (workers * 4)].key);
+  for (std::size_t j = 0; j < s && !sorted.empty(); ++j) samples.push_back(sorted[j * sorted.size() / s].key);
   std::vector<std::uint64_t> all;
   for (const auto& from : exchange_values(x, std::vector<std::vector<std::uint64_t>>(workers, samples))) all.insert(all.end(), from.begin(), from.end());
   std::sort(all.begin(), all.end());
@@ -141,21 +143,14 @@ SplitCloud<D> split_cloud(const Points<D>& share, const TileExchange* x, double 
   }
   out_records.clear();
   std::sort(records.begin(), records.end());
-  // The first copy of each point (the least input index): distinct_finite_points' choice.
+  // Each point once, in the order of its first copy (the least input index), as
+  // distinct_finite_points gives them.
   for (std::size_t begin = 0, end = 0; begin < records.size(); begin = end) {
     for (end = begin + 1; end < records.size() && records[end].key == records[begin].key; ++end) {
     }
     Points<D> run;
     for (std::size_t i = begin; i < end; ++i) run.push_back(vec<D>(records[i].x));
-    const DistinctPoints<D> distinct = merge_exact_duplicates(run);
-    for (std::size_t j = 0; j < distinct.points.size(); ++j) {
-      out.points.push_back(distinct.points[j]);
-      out.kept.push_back(records[begin + distinct.first[j]].input);
-    }
-    for (std::size_t i = 0; i < run.size(); ++i) {
-      const std::size_t first = records[begin + distinct.first[distinct.index_of[i]]].input;
-      if (first != records[begin + i].input) out.left_out.emplace_back(records[begin + i].input, first);
-    }
+    for (const Vec<D>& p : merge_exact_duplicates(run).points) out.points.push_back(p);
   }
   const std::vector<std::size_t> runs = all_gather(x, out.points.size());
   for (std::size_t w = 0; w < workers; ++w) {

@@ -11,7 +11,6 @@
 #include "lsrecon/core/types.h"
 #include "sampling/unit_box_transform.h"
 
-#include <utility>
 #include <vector>
 
 namespace lsr::detail {
@@ -19,10 +18,6 @@ namespace lsr::detail {
 template <int D>
 struct SplitCloud {
   Points<D> points;                ///< this worker's run: distinct finite points, input coordinates, in Z-order
-  std::vector<std::size_t> kept;   ///< the input index of each
-  /// (input index, input index of its first copy) of the finite points not in the run: each later
-  /// copy of a point of the run (and, once dropped, each isolated point: its own first copy)
-  std::vector<std::pair<std::size_t, std::size_t>> left_out;
   std::size_t global_first = 0;    ///< the global index of points[0] among every worker's
   std::size_t global_size = 0;     ///< distinct finite points in all
   std::size_t input_points = 0, skipped_points = 0, duplicate_points = 0;  ///< in all

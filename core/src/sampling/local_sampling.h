@@ -107,14 +107,14 @@ enum class HeightFieldsAt {
 
 /// @brief Which points this worker estimates, and how it shares them (tile_exchange.h).
 struct SamplingTiles {
-  int tiles = 1;                           ///< runs along the points' order; at least one per worker
-  const TileExchange* exchange = nullptr;  ///< null: this process alone
-  const CloudHalo* halo = nullptr;         ///< the index holds this worker's points and halo; null: every point
+  int tiles = 1;                    ///< runs along the points' order
+  const CloudHalo* halo = nullptr;  ///< the index holds this worker's run and its halo; null: every point, one process
 };
 
-/// @brief Estimates the sampling scales of every point of the index. Exact duplicates are skipped
-/// when ranking neighbours. Deterministic for any thread count, tiling and number of workers:
-/// each worker computes its own tiles' points and shares them, so all end with every point's.
+/// @brief Estimates the sampling scales of every point of the index (with a halo: of the run's
+/// points, whose neighbourhoods the halo holds). Exact duplicates are skipped when ranking
+/// neighbours. Deterministic for any thread count, tiling and number of workers: each worker
+/// computes its own points and exchanges the values the others' halos read.
 /// @param threads 0 for all cores
 /// @param height_fields where to fit height_fields (only spanning holes needs them; at every
 /// point they took 0.24 s of the 0.54 s of the sampling stage on a 200k-point torus)

@@ -5,6 +5,7 @@
 #include "sampling/mesh_resolution_sample.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace lsr::detail {
 namespace {
@@ -25,53 +26,80 @@ Values kept_of(const Values& all, const std::vector<Index>& kept) {
 
 template <int D>
 LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sampling, std::vector<double>& point_scale,
-                                const std::vector<double>& mesh_size, int threads) {
+                                const std::vector<double>& mesh_size, int threads, const CloudHalo* halo) {
+  const std::size_t first = halo ? halo->first : 0, end = halo ? halo->end : point_scale.size();
+  const TileExchange* x = halo ? halo->exchange : nullptr;
   std::vector<double> raised = point_scale;
-  for (std::size_t i = 0; i < raised.size(); ++i) raised[i] = std::max(raised[i], mesh_size[i]);
+  for (std::size_t i = first; i < end; ++i) raised[i] = std::max(raised[i], mesh_size[i]);
   LeftOut<D> out;
-  out.kept = mesh_resolution_sample<D>(data, point_scale, raised, sampling.scan_lines, threads);
+  out.kept = mesh_resolution_sample<D>(data, point_scale, raised, sampling.scan_lines, threads, halo);
   // Every rim point stays (a line's worth): the discs over holes and the closure of open sides
   // stand on them (measured: thinned, a double torus scanned from above opened a handle under
   // its unseen side).
   if (!sampling.rim.empty()) {
     std::vector<Index> with_rims;
     std::size_t next = 0;
-    for (std::size_t i = 0; i < point_scale.size(); ++i) {
+    for (std::size_t i = first; i < end; ++i) {
       const bool sampled = next < out.kept.size() && std::size_t(out.kept[next]) == i;
       next += sampled;
       if (sampled || sampling.rim[i]) with_rims.push_back(Index(i));
     }
     out.kept = std::move(with_rims);
   }
-  if (out.kept.size() == point_scale.size()) return {};
-  NearestPointIndex<D> kept(kept_of(data.points(), out.kept));
-  out.nearest.assign(point_scale.size(), 0);
-  out.represented.assign(out.kept.size(), 0);
+  if (sum_over_workers(x, out.kept.size()) == (halo ? halo->global_size : point_scale.size())) return {};
+  // Each point left out stands with its nearest kept point; a worker's reads the others' kept
+  // points as near as its own nearest.
   std::vector<char> is_kept(point_scale.size(), 0);
+  for (const Index j : out.kept) is_kept[std::size_t(j)] = 1;
+  const Points<D> own_kept = kept_of(data.points(), out.kept);
+  HaloCloud<D> local = with_halo<D>(own_kept, 0, 0, x, [&] {
+    HaloQueries<D> q;
+    for (std::size_t i = first; i < end; ++i) {
+      if (!is_kept[i]) q.at.push_back(data.points()[i]);
+    }
+    if (own_kept.empty()) {
+      q.reach.assign(q.at.size(), std::numeric_limits<double>::infinity());
+    } else {
+      NearestPointIndex<D>(own_kept).query(q.at, q.reach, nullptr, threads);
+      for (double& r : q.reach) r = r * (1.0 + 1e-9) + 1e-300;
+    }
+    return q;
+  });
+  NearestPointIndex<D> kept(std::move(local.points));
+  if (!halo) out.nearest.assign(point_scale.size(), 0);
+  std::vector<Index> represented(kept.points().size(), 0);
   for (std::size_t j = 0; j < out.kept.size(); ++j) {
-    is_kept[std::size_t(out.kept[j])] = 1;
-    out.nearest[std::size_t(out.kept[j])] = Index(j);
+    represented[local.halo.first + j] = 1;
+    if (!halo) out.nearest[std::size_t(out.kept[j])] = Index(j);
   }
   std::vector<std::size_t> left;
   Points<D> at;
   std::vector<double> distance;
   std::vector<Index> nearest;
-  for (std::size_t begin = 0; begin < point_scale.size(); begin += kBlock) {
-    const std::size_t end = std::min(point_scale.size(), begin + kBlock);
+  for (std::size_t begin = first; begin < end; begin += kBlock) {
+    const std::size_t end_block = std::min(end, begin + kBlock);
     left.clear();
     at.clear();
-    for (std::size_t i = begin; i < end; ++i) {
+    for (std::size_t i = begin; i < end_block; ++i) {
       if (is_kept[i]) continue;
       left.push_back(i);
       at.push_back(data.points()[i]);
     }
     kept.query(at, distance, &nearest, threads);
-    for (std::size_t q = 0; q < left.size(); ++q) out.nearest[left[q]] = nearest[q];
+    for (std::size_t q = 0; q < left.size(); ++q) {
+      represented[std::size_t(nearest[q])] += 1;
+      if (!halo) out.nearest[left[q]] = nearest[q];
+    }
   }
-  for (Index j : out.nearest) out.represented[std::size_t(j)] += 1;
-  data = std::move(kept);
-  out.normals = std::move(sampling.normals);
-  sampling.normals = kept_of(out.normals, out.kept);
+  local.halo.add_to_owners(represented);
+  out.represented.assign(represented.begin() + long(local.halo.first), represented.begin() + long(local.halo.end));
+  data = halo ? NearestPointIndex<D>(own_kept) : std::move(kept);
+  if (halo) {
+    sampling.normals = kept_of(sampling.normals, out.kept);
+  } else {
+    out.normals = std::move(sampling.normals);
+    sampling.normals = kept_of(out.normals, out.kept);
+  }
   sampling.spacing = kept_of(sampling.spacing, out.kept);
   sampling.noise = kept_of(sampling.noise, out.kept);
   sampling.height_fields = kept_of(sampling.height_fields, out.kept);
@@ -93,8 +121,10 @@ Points<D> every_point_normals(const LeftOut<D>& out, Points<D> oriented) {
   return normals;
 }
 
-template LeftOut<2> keep_mesh_resolution<2>(NearestPointIndex<2>&, LocalSampling<2>&, std::vector<double>&, const std::vector<double>&, int);
-template LeftOut<3> keep_mesh_resolution<3>(NearestPointIndex<3>&, LocalSampling<3>&, std::vector<double>&, const std::vector<double>&, int);
+template LeftOut<2> keep_mesh_resolution<2>(NearestPointIndex<2>&, LocalSampling<2>&, std::vector<double>&, const std::vector<double>&, int,
+                                             const CloudHalo*);
+template LeftOut<3> keep_mesh_resolution<3>(NearestPointIndex<3>&, LocalSampling<3>&, std::vector<double>&, const std::vector<double>&, int,
+                                             const CloudHalo*);
 template Points<2> every_point_normals<2>(const LeftOut<2>&, Points<2>);
 template Points<3> every_point_normals<3>(const LeftOut<3>&, Points<3>);
 

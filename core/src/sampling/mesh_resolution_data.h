@@ -7,6 +7,7 @@
 #pragma once
 
 #include "geometry/nearest_point_index.h"
+#include "sampling/cloud_halo.h"
 #include "sampling/local_sampling.h"
 
 #include <vector>
@@ -27,9 +28,12 @@ struct LeftOut {
 /// the sample at the mesh size of each point (mesh_size: local_mesh_sizes of point_scale), and
 /// the rim points (LocalSampling::rim). Nothing changes where no size exceeds its point's scale.
 /// @param threads 0 for all cores
+/// @param halo data holds a worker's run and its halo (cloud_halo.h): its run is thinned, to
+/// the bit as one process thins it, and data becomes the run's kept points; LeftOut then has
+/// kept (local indices) and represented only. Null: data holds every point.
 template <int D>
 LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sampling, std::vector<double>& point_scale,
-                                const std::vector<double>& mesh_size, int threads);
+                                const std::vector<double>& mesh_size, int threads, const CloudHalo* halo = nullptr);
 
 /// @brief Every point's outward normal: a kept point's is `oriented` (#kept, in the kept data's
 /// order), a point left out turns its PCA normal to agree with that of its nearest kept point,

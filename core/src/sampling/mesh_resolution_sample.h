@@ -25,6 +25,7 @@
 #pragma once
 
 #include "geometry/nearest_point_index.h"
+#include "sampling/cloud_halo.h"
 
 #include <vector>
 
@@ -36,8 +37,11 @@ namespace lsr {
 /// @param scan_lines the cloud was read as scan lines (LocalSampling::scan_lines): measure
 /// the density
 /// @param threads 0 for all cores
+/// @param halo data holds a worker's run and its halo (cloud_halo.h): the run's points are
+/// chosen, with their global indices; null: data holds every point
 template <int D>
 std::vector<Index> mesh_resolution_sample(const NearestPointIndex<D>& data, const std::vector<double>& sampling_scale,
-                                          const std::vector<double>& scale, bool scan_lines, int threads = 0);
+                                          const std::vector<double>& scale, bool scan_lines, int threads = 0,
+                                          const CloudHalo* halo = nullptr);
 
 }  // namespace lsr

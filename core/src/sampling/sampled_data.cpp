@@ -18,7 +18,7 @@ SampledData<D> sampled_data(const Points<D>& input, const ReconstructionOptions&
   NearestPointIndex<D> data(box.to_unit(in.points));
   clock.end("unit box");
   progress.update("sampling", -1.0);
-  const SamplingTiles tiles{o.limits.tiles, nullptr, nullptr};
+  const SamplingTiles tiles{o.limits.tiles, nullptr};
   LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
   if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
     // The box and every scale follow the data without them.
@@ -28,7 +28,11 @@ SampledData<D> sampled_data(const Points<D>& input, const ReconstructionOptions&
     data = NearestPointIndex<D>(box.to_unit(in.points));
     sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
   }
-  return {std::move(in), box, std::move(data), std::move(sampling)};
+  const double spacing = median(sampling.spacing), noise = median(sampling.noise);
+  std::vector<double> point_scale = local_scales(sampling);
+  LeftOut<D> left_out =
+      keep_mesh_resolution(data, sampling, point_scale, local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads);
+  return {std::move(in), box, std::move(data), std::move(sampling), std::move(point_scale), std::move(left_out), spacing, noise};
 }
 
 template SampledData<2> sampled_data<2>(const Points<2>&, const ReconstructionOptions&, HeightFieldsAt, const Progress&, ReconstructionResult<2>&, StageClock&);

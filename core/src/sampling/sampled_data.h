@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file sampled_data.h
-/// @brief Stages 1 and 2 of the pipeline: the data normalised (distinct finite points in the
-/// unit box, along a Z-order curve) and its local sampling, isolated points left out; in one
-/// process, or shared among workers (lsrecon/core/tile_exchange.h), each holding a run of the
-/// cloud and its halo, with worker 0 receiving every point's result.
+/// @brief Stages 1 to 3 of the pipeline: the data normalised (distinct finite points in the
+/// unit box, along a Z-order curve), its local sampling, isolated points left out, and the
+/// sample at the mesh's size that the stages after read; in one process, or shared among
+/// workers (lsrecon/core/tile_exchange.h), each holding a run of the cloud and its halo, with
+/// worker 0 receiving the sample.
 #pragma once
 
 #include "geometry/nearest_point_index.h"
@@ -12,6 +13,7 @@
 #include "lsrecon/core/reconstruction_result.h"
 #include "sampling/data_preparation.h"
 #include "sampling/local_sampling.h"
+#include "sampling/mesh_resolution_data.h"
 #include "sampling/unit_box_transform.h"
 #include "stage_clock.h"
 
@@ -21,14 +23,17 @@ namespace lsr::detail {
 
 template <int D>
 struct SampledData {
-  DataPoints<D> in;
+  DataPoints<D> in;              ///< every point (empty when shared among workers)
   UnitBoxTransform<D> box;
-  NearestPointIndex<D> data;   ///< the points in the unit box
-  LocalSampling<D> sampling;   ///< of data's points
+  NearestPointIndex<D> data;     ///< the sample at the mesh's size (keep_mesh_resolution), unit box
+  LocalSampling<D> sampling;     ///< of data's points
+  std::vector<double> point_scale;  ///< of data's points (local_scales)
+  LeftOut<D> left_out;           ///< when shared among workers: represented only
+  double spacing = 0.0, noise = 0.0;  ///< the medians over every point (unit box)
 };
 
 /// @brief The points' sampling in one process (`limits.exchange` null or one worker). Sets r's
-/// point counts, noise, spacing and scan_lines.
+/// point counts.
 template <int D>
 SampledData<D> sampled_data(const Points<D>& input, const ReconstructionOptions& o, HeightFieldsAt fields, const Progress& progress,
                             ReconstructionResult<D>& r, StageClock& clock);

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file shared_sampled_data.cpp
 /// @brief sampled_data shared among workers: split_cloud, with_halo, estimate_local_sampling on
-/// the run and its halo, the isolated points dropped where they lie, and every run's points and
-/// values gathered to worker 0 in the cloud's order.
+/// the run and its halo, the isolated points dropped where they lie, keep_mesh_resolution on
+/// each run, and every run's sample gathered to worker 0 in the cloud's order.
 #include "sampling/cloud_halo.h"
 #include "sampling/cloud_split.h"
+#include "sampling/mesh_resolution_data.h"
 #include "sampling/sampled_data.h"
 #include "sampling/worker_collectives.h"
 #include "start/start_fields.h"
@@ -23,17 +24,6 @@ void gather_run(const TileExchange* x, std::vector<T, A>& values, std::size_t fi
   for (auto& from : exchange_values(x, out)) values.insert(values.end(), from.begin(), from.end());
 }
 
-// The finite input indices and each one's first copy, from the points' and those left out.
-template <int D>
-void with_left_out(DataPoints<D>& in, std::vector<std::pair<std::size_t, std::size_t>> left_out) {
-  for (const std::size_t i : in.kept) left_out.emplace_back(i, i);
-  std::sort(left_out.begin(), left_out.end());
-  for (const auto& [input, first] : left_out) {
-    in.finite.push_back(input);
-    in.first.push_back(first);
-  }
-}
-
 }  // namespace
 
 template <int D>
@@ -49,27 +39,25 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
   progress.update("sampling", -1.0);
   LocalSampling<D> sampling;
   CloudHalo halo;
+  std::optional<NearestPointIndex<D>> index;
   for (int pass = 0;; ++pass) {
-    HaloCloud<D> local = with_halo(box.to_unit(run.points), run.global_first, run.global_size, x, o.limits.threads, progress);
+    const Points<D> own = box.to_unit(run.points);
+    HaloCloud<D> local = with_halo<D>(own, run.global_first, run.global_size, x, [&] {
+      return own_neighbourhoods(own, LocalSampling<D>::kHoleNeighbours, 1.5, o.limits.threads, progress);
+    });
     halo = std::move(local.halo);
-    const NearestPointIndex<D> index(std::move(local.points));
-    sampling = estimate_local_sampling(index, o.limits.threads, fields, progress, {o.limits.tiles, x, &halo}, o.sampling.scan_lines);
+    index.emplace(std::move(local.points));
+    sampling = estimate_local_sampling(*index, o.limits.threads, fields, progress, {std::max(1, o.limits.tiles / int(workers_of(x))), &halo}, o.sampling.scan_lines);
     if (pass == 1 || o.sampling.outlier_factor <= 0.0) break;
     // drop_isolated on this worker's points; the box and every scale follow the data without them.
     std::size_t n = 0;
     for (std::size_t i = 0; i < run.points.size(); ++i) {
       const std::size_t at = halo.first + i;
-      if (sampling.gap[at] > o.sampling.outlier_factor * sampling.spacing[at]) {
-        run.left_out.emplace_back(run.kept[i], run.kept[i]);
-        continue;
-      }
-      run.points[n] = run.points[i];
-      run.kept[n++] = run.kept[i];
+      if (!(sampling.gap[at] > o.sampling.outlier_factor * sampling.spacing[at])) run.points[n++] = run.points[i];
     }
     const std::size_t dropped = sum_over_workers(x, run.points.size() - n);
     if (dropped == 0) break;
     run.points.resize(n);
-    run.kept.resize(n);
     const std::vector<std::size_t> runs = all_gather(x, n);
     run.global_first = 0;
     for (std::size_t w = 0; w < worker_of(x); ++w) run.global_first += runs[w];
@@ -78,24 +66,32 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
     require_spanning_over_workers(run.points, x);
     box = ball_over_workers(run.points, run.global_size, x, kDataRadius);
   }
-  // Worker 0 gets every run's points and values, in the cloud's order.
+  Points<D>().swap(run.points);
+  // 3. The sample at the mesh's size, of each run; the medians of every point's.
   const std::size_t first = halo.first, end = halo.end;
-  gather_run(x, sampling.spacing, first, end);
-  gather_run(x, sampling.noise, first, end);
-  gather_run(x, sampling.normals, first, end);
-  gather_run(x, sampling.gap, first, end);
-  if (!sampling.rim.empty()) gather_run(x, sampling.rim, first, end);
-  if (!sampling.height_fields.empty()) gather_run(x, sampling.height_fields, first, end);
-  gather_run(x, run.points, 0, run.points.size());
-  gather_run(x, run.kept, 0, run.kept.size());
-  gather_run(x, run.left_out, 0, run.left_out.size());
+  const double spacing = median_over_workers(x, sampling.spacing.data() + first, end - first);
+  const double noise = median_over_workers(x, sampling.noise.data() + first, end - first);
+  std::vector<double> point_scale = local_scales(sampling);
+  LeftOut<D> left_out = keep_mesh_resolution(*index, sampling, point_scale,
+                                             local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads, &halo);
+  // Worker 0 gets every run's sample, in the cloud's order.
+  const bool thinned = !left_out.kept.empty();
+  const std::size_t from = thinned ? 0 : first, to = thinned ? point_scale.size() : end;
+  Points<D> points(index->points().begin() + long(from), index->points().begin() + long(to));
+  index.reset();
+  gather_run(x, points, 0, points.size());
+  gather_run(x, sampling.spacing, from, to);
+  gather_run(x, sampling.noise, from, to);
+  gather_run(x, sampling.normals, from, to);
+  gather_run(x, sampling.gap, from, to);
+  if (!sampling.rim.empty()) gather_run(x, sampling.rim, from, to);
+  if (!sampling.height_fields.empty()) gather_run(x, sampling.height_fields, from, to);
+  gather_run(x, point_scale, from, to);
+  if (thinned) gather_run(x, left_out.represented, 0, left_out.represented.size());
   if (worker_of(x) != 0) return std::nullopt;
-  DataPoints<D> in;
-  in.points = std::move(run.points);
-  in.kept = std::move(run.kept);
-  with_left_out(in, std::move(run.left_out));
-  NearestPointIndex<D> data(box.to_unit(in.points));
-  return SampledData<D>{std::move(in), box, std::move(data), std::move(sampling)};
+  LeftOut<D> sample;
+  sample.represented = std::move(left_out.represented);
+  return SampledData<D>{{}, box, NearestPointIndex<D>(std::move(points)), std::move(sampling), std::move(point_scale), std::move(sample), spacing, noise};
 }
 
 template std::optional<SampledData<3>> shared_sampled_data<3>(const Points<3>&, const ReconstructionOptions&, HeightFieldsAt, const Progress&,

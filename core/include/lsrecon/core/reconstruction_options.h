@@ -210,12 +210,14 @@ struct LimitOptions {
   /// Refuse (lsr::MeshTooLarge) meshes predicted to need more vertices; 0: from max_memory.
   Index max_vertices = 0;
   int threads = 0;  ///< 0: all cores
-  /// Split the sampling stage's per-point work into this many tiles (tile_exchange.h): runs
-  /// along the Z-order curve, computed one after another or shared among exchange's workers.
-  /// The lists of each point's 32 nearest are held one tile at a time (4 bytes x 32 a point
-  /// otherwise). 0: one tile per worker. The result does not depend on it.
+  /// Split the sampling stage's per-point work into this many tiles: runs along the Z-order
+  /// curve, computed one after another (each worker's run, when shared). The lists of each
+  /// point's 32 nearest are held one tile at a time (4 bytes x 32 a point otherwise). 0: one
+  /// tile per worker. The result does not depend on it.
   int tiles = 0;
-  /// The workers that share the tiles (lsrecon-mpi: MPI ranks); null: this process alone.
+  /// The workers that share the sampling (tile_exchange.h; lsrecon-mpi: MPI ranks), each
+  /// passing reconstruct() its share of the cloud (3D); null: this process alone. The result
+  /// does not depend on them.
   std::shared_ptr<const TileExchange> exchange;
 };
 

@@ -18,7 +18,7 @@ enum class ReconstructionStatus {
   converged,      ///< data and front within tolerance (up to StoppingOptions::unreached_fraction of stalled points)
   not_converged,  ///< stopped by patience or max_iterations; the best iterate is returned
   cancelled,      ///< the progress callback asked to stop; the best iterate so far, if any
-  shared,         ///< a worker other than 0 of LimitOptions::exchange: its tiles done, no surface
+  shared,         ///< a worker other than 0 of LimitOptions::exchange: its share done, no surface
 };
 
 /// @brief What came out, and how.
@@ -46,7 +46,8 @@ struct ReconstructionResult {
   /// #input points: outward unit normal of each input point (PCA of its neighbours, oriented
   /// by grad u; where the cloud is denser than the mesh, the points the mesh's sample left out
   /// as their nearest kept point); NaN for skipped points. Feed these to normal-based methods
-  /// such as Poisson.
+  /// such as Poisson. Empty when LimitOptions::exchange's workers shared the cloud (no process
+  /// holds every point).
   Points<D> point_normals;
   double spacing = 0.0;             ///< median local sampling spacing, input units
   std::vector<double> residual_history;  ///< max |u| on the data per step, input units
