@@ -298,14 +298,14 @@ lsr::Points<2> planar(const Input& in) {
 #ifdef LSRECON_MPI
 // A rank other than 0 of lsrecon-mpi: its share of the points, the same options, its part of the
 // sampling (lsrecon/core/tile_exchange.h), nothing written.
-int share_tiles(const Cli& c) {
+int share_run(const Cli& c) {
   double read_seconds = 0.0;
   const Input in = prepared_input(c, nullptr, read_seconds);
   const lsr::ReconstructionStatus status = in.dim == 2 ? solve<2>(c, planar(in)).status : solve<3>(c, in.points).status;
   if (status == lsr::ReconstructionStatus::cancelled) return 130;
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::fprintf(stderr, "lsrecon-mpi: rank %d of %d shared its tiles, peak memory %.0f MiB\n",
+  std::fprintf(stderr, "lsrecon-mpi: rank %d of %d shared its run of the cloud, peak memory %.0f MiB\n",
                c.solver.limits.exchange->worker(), c.solver.limits.exchange->workers(), double(usage.ru_maxrss) / 1024.0);
   return 0;
 }
@@ -392,7 +392,7 @@ int main(int argc, char** argv) {
     }
     c.solver.limits.exchange = exchange;
     if (rank != 0) c.quiet = true;
-    status = rank == 0 ? run(c) : share_tiles(c);
+    status = rank == 0 ? run(c) : share_run(c);
     if (status == 130) std::fprintf(stderr, "\nlsrecon-mpi: rank %d interrupted; nothing was written\n", rank);
   } catch (const std::exception& e) {
     const std::string message = lsr::demos::StagedOutputs::in_destination_terms(e.what());

@@ -46,7 +46,7 @@ TEST_F(Cli, MpiRanksShareTheTilesAndRankZeroWritesWhatOneProcessWrites) {
     ASSERT_EQ(one.status, 0) << one.output;
     const CliRun two = run_program(kMpiRun, path("scan.ply") + " " + path("two.ply") + " --report " + path("two.json") + options);
     ASSERT_EQ(two.status, 0) << two.output;
-    EXPECT_NE(two.output.find("rank 1 of 2 shared its tiles, peak memory"), std::string::npos) << two.output;
+    EXPECT_NE(two.output.find("rank 1 of 2 shared its run of the cloud, peak memory"), std::string::npos) << two.output;
     EXPECT_EQ(read("one.ply"), read("two.ply")) << options;
     expect_closed_mesh(path("two.ply"), 2);
     const nlohmann::json a = nlohmann::json::parse(read("one.json")), b = nlohmann::json::parse(read("two.json"));
