@@ -214,8 +214,8 @@ int solve_and_write(const Cli& c, const Input& in, const lsr::Points<D>& points,
   return 0;
 }
 
-// lsrecon-mpi: 2 if every rank's points lie in one plane z = const, as detect_dimension says
-// of the whole cloud; the non-finite points of every rank's share counted in rank 0's.
+// lsrecon-mpi: 2 if every rank's points lie in one plane z = const (detect_dimension of the
+// whole cloud) or a rank read a 2D file; the non-finite points of every share counted in rank 0's.
 int dimension_over_ranks(const lsr::TileExchange& x, Input& in) {
   struct Share {
     double lo, hi;
@@ -247,8 +247,9 @@ Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
   const lsr::TileExchange* x = c.solver.limits.exchange.get();
   const lsr::adapters::FileShare share{x ? std::size_t(x->worker()) : 0, x ? std::size_t(x->workers()) : 1};
   if (share.parts > 1 && (c.statistical.mean_k > 0 || !c.save_points.empty())) {
-    throw lsr::InvalidInput("--statistical-outliers and --save-points read the whole cloud, which lsrecon-mpi splits among its ranks",
-                            "run lsrecon for them");
+    throw lsr::InvalidInput(std::string(c.statistical.mean_k > 0 ? "--sor-mean-k (statistical outlier removal)" : "--save-points") +
+                                " reads the whole cloud, which lsrecon-mpi splits among its ranks",
+                            "run lsrecon for it");
   }
   Input in = c.demo.empty() ? read_input(c, share) : generate(c);
   if (!c.demo.empty() && share.parts > 1) {
@@ -257,7 +258,9 @@ Input prepared_input(const Cli& c, OutputFiles* files, double& read_seconds) {
     in.other_ranks = n - part.size();
     in.points = std::move(part);
   }
-  if (share.parts > 1) in.dim = dimension_over_ranks(*x, in);
+  if (share.parts > 1 && dimension_over_ranks(*x, in) == 2) {
+    throw lsr::InvalidInput("the input is planar (2D): lsrecon-mpi reconstructs surfaces", "run lsrecon for closed curves");
+  }
   if (files && !c.save_points.empty()) lsr::adapters::write_points(files->save_points, in.points);
   read_seconds = clock.lap();
   if (c.dim != 0) in.dim = c.dim;

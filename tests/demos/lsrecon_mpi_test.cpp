@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 
 namespace {
@@ -62,6 +63,18 @@ TEST_F(Cli, AFailingMpiRankStopsThemAllAndNothingIsWritten) {
   const CliRun r = run_program(kMpiRun, path("missing.ply") + " " + path("out.ply"));
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("missing.ply"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::ifstream(path("out.ply")).good());
+  // What needs the whole cloud in one process is refused by every rank.
+  lsr::Points<3> circle;
+  for (int i = 0; i < 200; ++i) circle.emplace_back(std::cos(0.0314 * i), std::sin(0.0314 * i), 0.0);
+  lsr::adapters::write_points(path("circle.ply"), circle);
+  const CliRun planar = run_program(kMpiRun, path("circle.ply") + " " + path("out.svg"));
+  EXPECT_NE(planar.status, 0);
+  EXPECT_NE(planar.output.find("lsrecon-mpi reconstructs surfaces"), std::string::npos) << planar.output;
+  const CliRun outliers = run_program(kMpiRun, path("circle.ply") + " " + path("out.ply") + " --sor-mean-k 8");
+  EXPECT_NE(outliers.status, 0);
+  EXPECT_NE(outliers.output.find("reads the whole cloud"), std::string::npos) << outliers.output;
+  EXPECT_FALSE(std::ifstream(path("out.svg")).good());
   EXPECT_FALSE(std::ifstream(path("out.ply")).good());
 }
 
