@@ -115,8 +115,19 @@ TEST(NearestPointIndex, DuplicatesAndSinglePointsWork) {
   EXPECT_DOUBLE_EQ(dup.distance(Vec<3>(0, 3, 4)), 5.0);
 }
 
-TEST(NearestPointIndex, RejectsEmptyAndNonFiniteInput) {
-  EXPECT_THROW(NearestPointIndex<3>(Points<3>{}), InvalidInput);
+// Empty: a worker's empty run of the cloud (tile_exchange.h); every query finds nothing.
+TEST(NearestPointIndex, AnEmptyIndexFindsNothingAndNonFiniteInputIsRejected) {
+  const NearestPointIndex<3> empty(Points<3>{});
+  const Points<3> q{Vec<3>(0, 0, 0), Vec<3>(1, 1, 1)};
+  std::vector<double> distance;
+  std::vector<Index> nearest;
+  empty.query(q, distance, &nearest, 1);
+  EXPECT_EQ(nearest, std::vector<Index>(2, -1));
+  EXPECT_TRUE(std::isinf(distance[0]) && std::isinf(distance[1]));
+  LargeVector<Index> k;
+  empty.query_k(q, 4, k, 1);
+  EXPECT_TRUE(std::all_of(k.begin(), k.end(), [](Index i) { return i == -1; }));
+  EXPECT_TRUE(std::isinf(empty.distance(q[0])));
   Points<3> p{Vec<3>(0, 0, 0), Vec<3>(std::nan(""), 0, 0)};
   EXPECT_THROW(NearestPointIndex<3>{p}, InvalidInput);
   p[1] = Vec<3>(std::numeric_limits<double>::infinity(), 0, 0);

@@ -59,50 +59,26 @@ TEST(WorkerCollectives, TheMedianOverWorkersIsTheMedianOfAllValues) {
 }
 
 // Worker 0's sample equals one process's, every byte: the box, the medians, the sample's points,
-// their estimates and scales, the points each stands for, and the counts. The cloud takes every
-// path: scan lines with a hole (rims, height fields), isolated points (dropped, then the box and
-// every estimate again), copies whose first copy another worker holds, NaN points, a worker
-// without points, and a mesh coarser than the data (the sample thinned).
-TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
-  std::mt19937 rng(11);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  Points<3> cloud;
-  const double a = 0.001;
-  for (int j = 0; j < 30; ++j) {
-    for (int i = 0; i < 300; ++i) {
-      const Vec<3> x(0.3 + a * i, 0.3 + 10 * a * j, 0.5 + 3e-3 * std::sin(20.0 * a * i) + 2e-4 * noise(rng));
-      if ((x.head<2>() - Vec<3>(0.45, 0.45, 0).head<2>()).norm() > 0.05) cloud.push_back(x);
-    }
-  }
-  for (int k = 0; k < 5; ++k) cloud.emplace_back(0.2 + 0.1 * k, 0.9, 0.1 + 0.05 * k);  // isolated
-  cloud.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5);
-  for (std::size_t i = 0; i < 200; i += 2) cloud.push_back(cloud[i]);  // copies, at the end
-  ReconstructionOptions o;
-  o.mesh.max_resolution = 32;
+// their estimates and scales, the points each stands for, and the counts. Worker w passes the
+// input's points [cut[w], cut[w + 1]).
+void expect_workers_match(const Points<3>& cloud, const std::vector<std::size_t>& cut, const ReconstructionOptions& o) {
   ReconstructionResult<3> one_r;
   detail::StageClock one_clock(one_r.seconds, one_r.stages);
   const SampledData<3> one = detail::sampled_data<3>(cloud, o, HeightFieldsAt::all_and_rims, Progress(), one_r, one_clock);
-  ASSERT_GT(one_r.outlier_points, 0u);
-  ASSERT_GT(one_r.duplicate_points, 0u);
-  ASSERT_NE(std::count(one.sampling.rim.begin(), one.sampling.rim.end(), 1), 0);
-  ASSERT_FALSE(one.left_out.represented.empty());  // thinned
-
-  constexpr int kWorkers = 3;
-  std::vector<std::optional<SampledData<3>>> each(kWorkers);
-  std::vector<ReconstructionResult<3>> r(kWorkers);
-  on_workers(kWorkers, [&](int w, const TileExchange& x) {
-    // Worker 1 holds nothing; the others half each.
-    const std::size_t n = cloud.size(), begin = w == 0 ? 0 : n / 2, end = w == 0 ? n / 2 : w == 1 ? n / 2 : n;
+  const int workers = int(cut.size()) - 1;
+  std::vector<std::optional<SampledData<3>>> each(cut.size() - 1);
+  std::vector<ReconstructionResult<3>> r(cut.size() - 1);
+  on_workers(workers, [&](int w, const TileExchange& x) {
     ReconstructionOptions ow = o;
     ow.limits.exchange = std::shared_ptr<const TileExchange>(&x, [](const TileExchange*) {});
     ow.limits.threads = 1;
-    detail::StageClock clock(r[std::size_t(w)].seconds, r[std::size_t(w)].stages);
-    each[std::size_t(w)] = detail::shared_sampled_data<3>(Points<3>(cloud.begin() + long(begin), cloud.begin() + long(end)), ow,
-                                                          HeightFieldsAt::all_and_rims, Progress(), r[std::size_t(w)], clock);
+    const std::size_t at = std::size_t(w);
+    detail::StageClock clock(r[at].seconds, r[at].stages);
+    each[at] = detail::shared_sampled_data<3>(Points<3>(cloud.begin() + long(cut[at]), cloud.begin() + long(cut[at + 1])), ow,
+                                              HeightFieldsAt::all_and_rims, Progress(), r[at], clock);
   });
   ASSERT_TRUE(each[0].has_value());
-  EXPECT_FALSE(each[1].has_value());
-  EXPECT_FALSE(each[2].has_value());
+  for (int w = 1; w < workers; ++w) EXPECT_FALSE(each[std::size_t(w)].has_value());
   const SampledData<3>& two = *each[0];
   EXPECT_EQ(one.box.scale(), two.box.scale());
   EXPECT_EQ(one.box.center(), two.box.center());
@@ -124,6 +100,51 @@ TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
     EXPECT_EQ(rw.duplicate_points, one_r.duplicate_points);
     EXPECT_EQ(rw.outlier_points, one_r.outlier_points);
   }
+}
+
+// Scan lines with a hole and a wave, a little noise: rims and height fields.
+Points<3> scan_lines() {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  Points<3> cloud;
+  const double a = 0.001;
+  for (int j = 0; j < 30; ++j) {
+    for (int i = 0; i < 300; ++i) {
+      const Vec<3> x(0.3 + a * i, 0.3 + 10 * a * j, 0.5 + 3e-3 * std::sin(20.0 * a * i) + 2e-4 * noise(rng));
+      if ((x.head<2>() - Vec<3>(0.45, 0.45, 0).head<2>()).norm() > 0.05) cloud.push_back(x);
+    }
+  }
+  return cloud;
+}
+
+// Every path: rims, isolated points (dropped, then the box and every estimate again), copies
+// whose first copy another worker holds, NaN points, a worker without input points, and a mesh
+// coarser than the data (the sample thinned).
+TEST(SharedSampling, WorkersGiveWorkerZeroWhatOneProcessComputes) {
+  Points<3> cloud = scan_lines();
+  for (int k = 0; k < 5; ++k) cloud.emplace_back(0.2 + 0.1 * k, 0.9, 0.1 + 0.05 * k);  // isolated
+  cloud.emplace_back(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5);
+  for (std::size_t i = 0; i < 200; i += 2) cloud.push_back(cloud[i]);  // copies, at the end
+  ReconstructionOptions o;
+  o.mesh.max_resolution = 32;
+  ReconstructionResult<3> r;
+  detail::StageClock clock(r.seconds, r.stages);
+  const SampledData<3> one = detail::sampled_data<3>(cloud, o, HeightFieldsAt::all_and_rims, Progress(), r, clock);
+  ASSERT_GT(r.outlier_points, 0u);
+  ASSERT_GT(r.duplicate_points, 0u);
+  ASSERT_NE(std::count(one.sampling.rim.begin(), one.sampling.rim.end(), 1), 0);
+  ASSERT_FALSE(one.left_out.represented.empty());  // thinned
+  expect_workers_match(cloud, {0, cloud.size() / 2, cloud.size() / 2, cloud.size()}, o);
+}
+
+// A flood of copies of one point: the workers' samples of the keys repeat it, cuts of the curve
+// fall on it, and a worker's run is empty or that one point (no point of it in the sample).
+TEST(SharedSampling, AWorkerWithAnEmptyRunTakesPart) {
+  Points<3> cloud = scan_lines();
+  cloud.insert(cloud.end(), 3 * cloud.size(), cloud[1000]);
+  ReconstructionOptions o;
+  o.mesh.max_resolution = 32;
+  expect_workers_match(cloud, {0, cloud.size() / 4, cloud.size() / 2, 3 * cloud.size() / 4, cloud.size()}, o);
 }
 
 }  // namespace

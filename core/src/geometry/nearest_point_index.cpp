@@ -70,8 +70,9 @@ struct BoundedKNearest : flann::ResultSet<double> {
 
 template <int D>
 NearestPointIndex<D>::NearestPointIndex(Points<D> points) : impl_(std::make_unique<Impl>()) {
-  require_valid_points(points, "data points");
+  if (!points.empty()) require_valid_points(points, "data points");
   impl_->points = std::move(points);
+  if (impl_->points.empty()) return;
   const auto& p = impl_->points;
   impl_->flat.resize(p.size() * D);
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -111,6 +112,7 @@ void NearestPointIndex<D>::query_within(const Points<D>& queries, const std::vec
   const long n = long(queries.size());
   distance.assign(queries.size(), std::numeric_limits<double>::infinity());
   nearest.assign(queries.size(), -1);
+  if (!impl_->index) return;
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false);
   const Points<D>& p = impl_->points;
 #pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
@@ -138,6 +140,7 @@ void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, LargeVector<
   const long n = long(queries.size());
   const int kk = std::max(1, std::min<int>(k, int(impl_->points.size())));
   nearest.assign(queries.size() * std::size_t(k), -1);
+  if (!impl_->index) return;
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, true);
   // In Z-order, each query's k nearest lie within the previous one's k-th distance plus the
   // step between them: a tight bound from the start of the search.
@@ -168,6 +171,8 @@ void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, LargeVector<
 
 template <int D>
 void NearestPointIndex<D>::within(const Vec<D>& q, double radius, std::vector<Index>& found) const {
+  found.clear();
+  if (!impl_->index) return;
   double coords[D];
   for (int d = 0; d < D; ++d) coords[d] = q[d];
   flann::Matrix<double> query(coords, 1, D);
@@ -188,7 +193,7 @@ double NearestPointIndex<D>::distance(const Vec<D>& q) const {
 template <int D>
 Index NearestPointIndex<D>::nearest(const Vec<D>& q, double& distance) const {
   BoundedNearest found(std::numeric_limits<double>::infinity());
-  impl_->index->findNeighbors(found, q.data(), flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false));
+  if (impl_->index) impl_->index->findNeighbors(found, q.data(), flann::SearchParams(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false));
   distance = found.index == std::size_t(-1) ? std::numeric_limits<double>::infinity() : std::sqrt(found.worst);
   return found.index == std::size_t(-1) ? Index(-1) : Index(found.index);
 }

@@ -17,7 +17,8 @@ namespace lsr {
 template <int D>
 class NearestPointIndex {
  public:
-  /// @throw InvalidInput if points is empty or holds a non-finite coordinate.
+  /// @brief Empty, the index finds nothing (a worker's empty run of the cloud).
+  /// @throw InvalidInput if points holds a non-finite coordinate.
   explicit NearestPointIndex(Points<D> points);
   ~NearestPointIndex();
   NearestPointIndex(NearestPointIndex&&) noexcept;

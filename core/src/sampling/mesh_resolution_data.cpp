@@ -93,7 +93,7 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
   }
   local.halo.add_to_owners(represented);
   out.represented.assign(represented.begin() + long(local.halo.first), represented.begin() + long(local.halo.end));
-  data = halo ? NearestPointIndex<D>(own_kept) : std::move(kept);
+  if (!halo) data = std::move(kept);
   if (halo) {
     sampling.normals = kept_of(sampling.normals, out.kept);
   } else {

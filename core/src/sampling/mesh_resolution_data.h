@@ -29,8 +29,9 @@ struct LeftOut {
 /// the rim points (LocalSampling::rim). Nothing changes where no size exceeds its point's scale.
 /// @param threads 0 for all cores
 /// @param halo data holds a worker's run and its halo (cloud_halo.h): its run is thinned, to
-/// the bit as one process thins it, and data becomes the run's kept points; LeftOut then has
-/// kept (local indices) and represented only. Null: data holds every point.
+/// the bit as one process thins it, sampling and point_scale to the run's kept points; data is
+/// left as it is, and LeftOut has kept (indices into data) and represented only. Null: data
+/// holds every point.
 template <int D>
 LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sampling, std::vector<double>& point_scale,
                                 const std::vector<double>& mesh_size, int threads, const CloudHalo* halo = nullptr);

@@ -74,20 +74,23 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
   std::vector<double> point_scale = local_scales(sampling);
   LeftOut<D> left_out = keep_mesh_resolution(*index, sampling, point_scale,
                                              local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads, &halo);
-  // Worker 0 gets every run's sample, in the cloud's order.
-  const bool thinned = !left_out.kept.empty();
+  // Worker 0 gets every run's sample, in the cloud's order: the run's values, thinned to its
+  // kept points (all its own if the cloud was not thinned; none, maybe, if it was).
+  const bool thinned = point_scale.size() != index->points().size();
   const std::size_t from = thinned ? 0 : first, to = thinned ? point_scale.size() : end;
-  Points<D> points(index->points().begin() + long(from), index->points().begin() + long(to));
+  Points<D> points;
+  for (std::size_t i = from; i < to; ++i) points.push_back(index->points()[thinned ? std::size_t(left_out.kept[i]) : i]);
   index.reset();
   gather_run(x, points, 0, points.size());
   gather_run(x, sampling.spacing, from, to);
   gather_run(x, sampling.noise, from, to);
   gather_run(x, sampling.normals, from, to);
   gather_run(x, sampling.gap, from, to);
-  if (!sampling.rim.empty()) gather_run(x, sampling.rim, from, to);
-  if (!sampling.height_fields.empty()) gather_run(x, sampling.height_fields, from, to);
+  // A run that kept no point has them empty either way.
+  if (sum_over_workers(x, std::size_t(!sampling.rim.empty())) > 0) gather_run(x, sampling.rim, from, to);
+  if (sum_over_workers(x, std::size_t(!sampling.height_fields.empty())) > 0) gather_run(x, sampling.height_fields, from, to);
   gather_run(x, point_scale, from, to);
-  if (thinned) gather_run(x, left_out.represented, 0, left_out.represented.size());
+  gather_run(x, left_out.represented, 0, left_out.represented.size());  // empty where not thinned
   if (worker_of(x) != 0) return std::nullopt;
   LeftOut<D> sample;
   sample.represented = std::move(left_out.represented);
