@@ -93,10 +93,10 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
   }
   local.halo.add_to_owners(represented);
   out.represented.assign(represented.begin() + long(local.halo.first), represented.begin() + long(local.halo.end));
-  if (!halo) data = std::move(kept);
   if (halo) {
     sampling.normals = kept_of(sampling.normals, out.kept);
   } else {
+    data = std::move(kept);
     out.normals = std::move(sampling.normals);
     sampling.normals = kept_of(out.normals, out.kept);
   }
