@@ -172,6 +172,62 @@ void expect_same(const LocalSampling<3>& a, const LocalSampling<3>& b, const std
   EXPECT_TRUE(same_bytes(a.height_fields, b.height_fields)) << what;
 }
 
+// drop_isolated's points (the nearest distinct neighbour beyond 3 spacings), found before the
+// spacing is raised over gaps, are those the whole estimate gives. Scan lines of a plane (a
+// apart along x, lines 10 a apart): a point 0.1 above it is isolated; one 15 a above a line is
+// beyond 3 of its neighbours' spacing along their line (3 a) but within 3 of the spacing raised
+// to the gap between lines (about 9 a), so it is kept. A random curve with a point far off.
+TEST(LocalSampling, IsolatedPointsFoundEarlyAreThoseOfTheWholeEstimate) {
+  const double a = 0.002, gap = 10 * a, factor = 3.0;
+  Points<3> lines;
+  for (int j = 0; j < 20; ++j) {
+    for (int i = 0; i < 200; ++i) lines.emplace_back(0.3 + a * i, 0.3 + gap * j, 0.5);
+  }
+  const std::size_t far = lines.size(), hovering = far + 1;
+  lines.emplace_back(0.5, 0.4, 0.6);
+  lines.emplace_back(0.3 + a * 100, 0.3 + gap * 10, 0.5 + 15 * a);
+  const NearestPointIndex<3> data(lines);
+  const auto isolated = [&](const auto& s) {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < s.gap.size(); ++i) {
+      if (s.gap[i] > factor * s.spacing[i]) out.push_back(i);
+    }
+    return out;
+  };
+  const LocalSampling<3> scattered = estimate_local_sampling(data, 1, HeightFieldsAt::none, Progress(), {}, ScanLines::no);
+  ASSERT_GT(scattered.gap[hovering], factor * scattered.spacing[hovering]);  // a candidate
+  const LocalSampling<3> whole = estimate_local_sampling(data, 1);
+  ASSERT_TRUE(whole.scan_lines);
+  EXPECT_EQ(isolated(whole), std::vector<std::size_t>{far});
+  for (const int tiles : {1, 7}) {
+    const LocalSampling<3> early =
+        estimate_local_sampling(data, 1, HeightFieldsAt::rims, Progress(), {tiles, nullptr}, ScanLines::automatic, factor);
+    EXPECT_TRUE(early.stopped_at_isolated) << tiles;
+    EXPECT_EQ(isolated(early), std::vector<std::size_t>{far}) << tiles;
+  }
+  // Without the far point nothing is isolated: the estimate runs on, to the same bytes.
+  Points<3> kept = lines;
+  kept.erase(kept.begin() + long(far));
+  const NearestPointIndex<3> kept_data(kept);
+  const LocalSampling<3> on = estimate_local_sampling(kept_data, 1, HeightFieldsAt::rims, Progress(), {}, ScanLines::automatic, factor);
+  EXPECT_FALSE(on.stopped_at_isolated);
+  expect_same(on, estimate_local_sampling(kept_data, 1, HeightFieldsAt::rims), "scan lines, none isolated");
+
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(0.0, 2 * kPi);
+  Points<2> curve;
+  for (int i = 0; i < 2000; ++i) {
+    const double t = angle(rng);
+    curve.emplace_back(0.5 + 0.3 * std::cos(t), 0.5 + 0.3 * std::sin(t));
+  }
+  curve.emplace_back(0.5, 0.5);
+  const NearestPointIndex<2> curve_data(curve);
+  const LocalSampling<2> early = estimate_local_sampling(curve_data, 1, HeightFieldsAt::none, Progress(), {}, ScanLines::automatic, factor);
+  EXPECT_TRUE(early.stopped_at_isolated);
+  EXPECT_EQ(isolated(early), isolated(estimate_local_sampling(curve_data, 1)));
+  EXPECT_EQ(isolated(early), std::vector<std::size_t>{curve.size() - 1});
+}
+
 // Every point's estimate is computed from its own neighbours, in the whole index or in a
 // worker's run and halo, whichever tile or worker computes it; the cloud-wide decisions (scan
 // lines or not, the rims' smoothness) are taken on every worker's values. So tiles and workers

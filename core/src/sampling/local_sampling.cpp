@@ -2,6 +2,8 @@
 /// @file local_sampling.cpp
 #include "sampling/local_sampling.h"
 
+#include "sampling/isolated_points.h"
+#include "sampling/spacing_over_gaps.h"
 #include "sampling/tile_runs.h"
 
 #include <Eigen/Eigenvalues>
@@ -62,33 +64,6 @@ double largest_angular_gap(const Points<D>& p, const Index* nearest, int k, std:
     if (middle) *middle = frame.transpose() * Vec<D>(std::cos(from + 0.5 * gap), std::sin(from + 0.5 * gap), 0.0);
     return gap;
   }
-}
-
-// The radius of the largest disc in p_i's tangent plane free of its k neighbours (projected),
-// among discs centred within half the neighbourhood's radius of p_i (where the neighbours
-// surround the centre, so the disc is a hole in the sample, not the neighbourhood's edge):
-// candidate centres on 16 rays at a quarter and half that radius.
-template <int D>
-double empty_disc_radius(const Points<D>& p, const Index* nearest, int k, std::size_t i, const Vec<D>& normal) {
-  const Eigen::Matrix<double, D, D> frame = tangent_frame(normal);
-  Eigen::Matrix<double, D - 1, 1> y[64];
-  double radius = 0.0;
-  for (int j = 0; j < k && j < 64; ++j) {
-    y[j] = (frame * (p[nearest[j]] - p[i])).template head<D - 1>();
-    radius = std::max(radius, y[j].norm());
-  }
-  double largest = 0.0;
-  for (int a = 0; a < 16; ++a) {
-    for (const double t : {0.25, 0.5}) {
-      Eigen::Matrix<double, D - 1, 1> c = Eigen::Matrix<double, D - 1, 1>::Zero();
-      c[0] = t * radius * std::cos(a * M_PI / 8);
-      if constexpr (D == 3) c[1] = t * radius * std::sin(a * M_PI / 8);
-      double nearest_distance = std::numeric_limits<double>::infinity();
-      for (int j = 0; j < k && j < 64; ++j) nearest_distance = std::min(nearest_distance, (y[j] - c).norm());
-      largest = std::max(largest, nearest_distance);
-    }
-  }
-  return largest;
 }
 
 // The mean |cos| between p_i's normal and its neighbours': about 1 on a smooth surface, less
@@ -184,159 +159,6 @@ std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::ve
   return rim;
 }
 
-// Median of raw over the neighbourhood of each of this worker's points (out[first + r] for the
-// r-th).
-void neighbourhood_median(const std::vector<double>& raw, const LargeVector<Index>& nearest, int k, std::size_t first,
-                          std::vector<double>& out, int threads) {
-  out.resize(raw.size());
-  const long n = long(nearest.size() / std::size_t(k));
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (long r = 0; r < n; ++r) {
-    double v[32];
-    for (int j = 0; j < k; ++j) v[j] = raw[std::size_t(nearest[std::size_t(r) * k + j])];
-    std::nth_element(v, v + k / 2, v + k);
-    out[first + std::size_t(r)] = v[k / 2];
-  }
-}
-
-// Scan lines: the k nearest of a point lie along its own line, 3-10 times nearer than the
-// next line (CGAL's raw scans and the simulated ones). Their spacing is the line's, and their
-// PCA normal is any direction across the line. A cloud is taken as scan lines when its median
-// elongation (spread across the line over spread along it, of the kNeighbours nearest) is below
-// kScanLineElongation: 0.58 on i.i.d. samples of every corpus shape, clean or noisy, and 0.72
-// on an isotropic raster; 0.18-0.24 on 60 x 600 line scans (measured, 20-45k points). Then
-// normals and noise come from kHoleNeighbours, which reach the next lines, and the spacing is at
-// least the radius of the largest empty disc among them (median-filtered) over
-// kHoleToSpacing. i.i.d. samples are left as they were.
-//
-// Denser lines hide their elongation in their noise: when the range noise exceeds the spacing
-// along a line, the k nearest are a noisy piece of one line, spread along it and along the
-// normal, and their PCA normal lies across the line in the tangent plane. On a 1M-point scan of
-// a sphere (6 views, 300 x 3000 lines) the median elongation was 0.67, 45% of the 16-NN normals
-// were more than 45 degrees off the true normal, and 1% of the 32-NN ones. Such a cloud shows
-// itself by its narrow and wide normals disagreeing: the fraction of points where they are
-// more than 45 degrees apart was 0.40 there and 0.23-0.26 on 60 x 600 scans, against at most
-// 0.01 on i.i.d. samples (clean or noisy, sphere and bunny) and on CGAL's raw scans (measured);
-// above kScanLineDisagreement the cloud is read as scan lines too. Checked on every 8th point.
-template <int D>
-bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& s, int threads, const TileRuns& tiles) {
-  constexpr int wide = LocalSampling<D>::kHoleNeighbours;
-  constexpr std::size_t kStride = 8;
-  const Points<D>& p = data.points();
-  Points<D> probes;
-  std::vector<std::size_t> which;
-  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
-    if (tiles.global(i) % kStride != 0) continue;
-    probes.push_back(p[i]);
-    which.push_back(i);
-  }
-  LargeVector<Index> nearest;
-  data.query_k(probes, wide, nearest, threads);
-  const long n = long(probes.size());
-  long disagree = 0;
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(+ : disagree)
-  for (long j = 0; j < n; ++j) {
-    double thickness = 0.0;
-    Vec<D> normal;
-    pca(p, &nearest[std::size_t(j) * wide], wide, thickness, normal);
-    if (std::abs(normal.dot(s.normals[which[std::size_t(j)]])) < std::sqrt(0.5)) ++disagree;
-  }
-  const std::size_t probed = (tiles.global_size(p.size()) + kStride - 1) / kStride;
-  return double(tiles.sum(disagree)) > LocalSampling<D>::kScanLineDisagreement * double(probed);
-}
-
-// Calls at(i, its kHoleNeighbours nearest) for each of this worker's points, holding one tile's
-// neighbour lists at a time.
-template <int D, class AtPoint>
-void over_wide_neighbourhoods(const NearestPointIndex<D>& data, int threads, const Progress& progress, const TileRuns& tiles,
-                              const AtPoint& at) {
-  constexpr int wide = LocalSampling<D>::kHoleNeighbours;
-  const Points<D>& p = data.points();
-  for (std::size_t tile = 0; tile + 1 < tiles.cuts.size(); ++tile) {
-    progress.update("sampling", -1.0);
-    const std::size_t first = tiles.cuts[tile];
-    Points<D> copy;
-    LargeVector<Index> nearest;
-    data.query_k(run_of(p, first, tiles.cuts[tile + 1], copy), wide, nearest, threads);
-    const long n = long(tiles.cuts[tile + 1] - first);
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (long r = 0; r < n; ++r) at(first + std::size_t(r), &nearest[std::size_t(r) * wide]);
-  }
-}
-
-// The spacing is at least the radius of the holes in the sample (median-filtered) over
-// kHoleToSpacing.
-template <int D>
-void raise_spacing_to_holes(std::vector<double>& hole, const LargeVector<Index>& neighbours, int k, int threads,
-                            const TileRuns& tiles, LocalSampling<D>& s) {
-  tiles.share(hole);
-  std::vector<double> filtered;
-  neighbourhood_median(hole, neighbours, k, tiles.first(), filtered, threads);
-  for (std::size_t i = tiles.first(); i < tiles.end(); ++i) {
-    s.spacing[i] = std::max(s.spacing[i], filtered[i] / LocalSampling<D>::kHoleToSpacing);
-  }
-}
-
-template <int D>
-void adapt_to_scan_lines(const NearestPointIndex<D>& data, const LargeVector<Index>& neighbours, int k, int threads,
-                         std::vector<double>& elongation, LocalSampling<D>& s, const Progress& progress,
-                         const TileRuns& tiles, ScanLines mode) {
-  constexpr int wide = LocalSampling<D>::kHoleNeighbours;
-  const Points<D>& p = data.points();
-  if (tiles.global_size(p.size()) < std::size_t(wide)) return;
-  if (mode == ScanLines::no) return;
-  if (mode == ScanLines::automatic) {
-    if (!(tiles.median(elongation) < LocalSampling<D>::kScanLineElongation) && !normals_disagree(data, s, threads, tiles)) return;
-  }
-  s.scan_lines = true;
-  std::vector<double> hole(p.size()), noise(p.size());
-  over_wide_neighbourhoods(data, threads, progress, tiles, [&](std::size_t i, const Index* around) {
-    pca(p, around, wide, noise[i], s.normals[i]);
-    hole[i] = empty_disc_radius(p, around, wide, i, s.normals[i]);
-  });
-  progress.update("sampling", -1.0);
-  tiles.share(noise);
-  neighbourhood_median(noise, neighbours, k, tiles.first(), s.noise, threads);
-  raise_spacing_to_holes(hole, neighbours, k, threads, tiles, s);
-}
-
-// On a curve (2D) the gaps between random samples are exponential: the largest of n is about
-// ln n mean gaps (6.5, 7.9 and 10.4 among 300, 1500 and 10000 on a circle), 6.5-13 times the
-// spacing at its ends, and the front fell through them (a random circle came out as 18-362
-// loops). So the spacing is at least the half-width of the widest gap between consecutive
-// neighbours along the tangent (of the kHoleNeighbours nearest; its middle within half their
-// radius of the point, where they surround it) over kHoleToSpacing, median-filtered: the rule of
-// 3D scan lines, whose empty disc becomes a gap between two samples, so that a hole's rim (all
-// its neighbours on one side) is not widened. Evenly spaced samples keep their spacing: a gap
-// a gives 0.91 a, and the spacing rule a.
-double widest_gap_between(const Points<2>& p, const Index* nearest, int k, std::size_t i, const Vec<2>& normal) {
-  const Vec<2> tangent(-normal.y(), normal.x());
-  double t[LocalSampling<2>::kHoleNeighbours];
-  double radius = 0.0;
-  for (int j = 0; j < k; ++j) {
-    t[j] = tangent.dot(p[nearest[j]] - p[i]);
-    radius = std::max(radius, std::abs(t[j]));
-  }
-  std::sort(t, t + k);
-  double widest = 0.0;
-  for (int j = 1; j < k; ++j) {
-    if (std::abs(t[j] + t[j - 1]) <= radius) widest = std::max(widest, t[j] - t[j - 1]);
-  }
-  return widest;
-}
-
-void widen_across_curve_gaps(const NearestPointIndex<2>& data, const LargeVector<Index>& neighbours, int k, int threads,
-                             LocalSampling<2>& s, const Progress& progress, const TileRuns& tiles) {
-  constexpr int wide = LocalSampling<2>::kHoleNeighbours;
-  const Points<2>& p = data.points();
-  if (tiles.global_size(p.size()) < std::size_t(wide)) return;
-  std::vector<double> half_gap(p.size());
-  over_wide_neighbourhoods(data, threads, progress, tiles, [&](std::size_t i, const Index* around) {
-    half_gap[i] = 0.5 * widest_gap_between(p, around, wide, i, s.normals[i]);
-  });
-  raise_spacing_to_holes(half_gap, neighbours, k, threads, tiles, s);
-}
-
 }  // namespace
 
 double median(std::vector<double> values) {
@@ -347,7 +169,8 @@ double median(std::vector<double> values) {
 
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads, HeightFieldsAt height_fields,
-                                         const Progress& progress, const SamplingTiles& tiling, ScanLines scan_lines) {
+                                         const Progress& progress, const SamplingTiles& tiling, ScanLines scan_lines,
+                                         double isolated_factor) {
   constexpr int k = LocalSampling<D>::kNeighbours;
   const int t = threads > 0 ? threads : omp_get_max_threads();
   const Points<D>& p = data.points();
@@ -378,14 +201,16 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   }
   tiles.share(spacing);
   tiles.share(noise);
-  neighbourhood_median(spacing, neighbours, k, first, s.spacing, t);
-  neighbourhood_median(noise, neighbours, k, first, s.noise, t);
+  neighbourhood_medians(spacing, neighbours, k, first, s.spacing, t);
+  neighbourhood_medians(noise, neighbours, k, first, s.noise, t);
   progress.update("sampling", -1.0);
-  if constexpr (D == 3) {
-    adapt_to_scan_lines(data, neighbours, k, t, elongation, s, progress, tiles, scan_lines);
-  } else {
-    widen_across_curve_gaps(data, neighbours, k, t, s, progress, tiles);
+  const bool raised = spacing_over_gaps(data, elongation, s, t, tiles, scan_lines);
+  if constexpr (D == 3) s.scan_lines = raised;
+  if (isolated_factor > 0.0 && isolated_points_found(data, neighbours, raised, isolated_factor, t, tiles, s)) {
+    s.stopped_at_isolated = true;
+    return s;
   }
+  if (raised) raise_spacing_over_gaps(data, neighbours, t, s, progress, tiles);
   tiles.share(s.spacing);
   tiles.share(s.noise);
   tiles.share(s.normals);
@@ -405,7 +230,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
   return s;
 }
 
-template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines);
-template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines);
+template LocalSampling<2> estimate_local_sampling<2>(const NearestPointIndex<2>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines, double);
+template LocalSampling<3> estimate_local_sampling<3>(const NearestPointIndex<3>&, int, HeightFieldsAt, const Progress&, const SamplingTiles&, ScanLines, double);
 
 }  // namespace lsr

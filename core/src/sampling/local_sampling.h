@@ -76,6 +76,9 @@ struct LocalSampling {
   /// scan. Empty unless height fields are asked for at the rims.
   std::vector<char> rim;
   bool scan_lines = false;  ///< 3D: read as scan lines (below)
+  /// estimate_local_sampling, given an isolated_factor, found isolated points and stopped: only
+  /// `spacing` and `gap` are set, for drop_isolated (the sampling is then estimated without them)
+  bool stopped_at_isolated = false;
   static constexpr double kRimGap = 2.09;  ///< radians (120 degrees); pi on a straight rim
   static constexpr int kRimNeighbours = 32;
   /// mean |cos| of the angles between a rim point's normal and its neighbours' at least
@@ -121,11 +124,13 @@ struct SamplingTiles {
 /// @param progress stage "sampling", fraction unknown, between the passes over the points
 /// (each up to a minute at 10M points); throws Cancelled
 /// @param scan_lines 3D: whether to read the cloud as scan lines, automatic: decide from it
+/// @param isolated_factor > 0: stop as soon as any point is found isolated by drop_isolated's
+/// rule with this factor (isolated_points.h; LocalSampling::stopped_at_isolated)
 template <int D>
 LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int threads = 0,
                                          HeightFieldsAt height_fields = HeightFieldsAt::none,
                                          const Progress& progress = Progress(), const SamplingTiles& tiles = {},
-                                         ScanLines scan_lines = ScanLines::automatic);
+                                         ScanLines scan_lines = ScanLines::automatic, double isolated_factor = 0.0);
 
 /// @brief The median of values (copied; empty gives 0).
 double median(std::vector<double> values);

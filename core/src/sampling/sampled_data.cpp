@@ -19,9 +19,11 @@ SampledData<D> sampled_data(const Points<D>& input, const ReconstructionOptions&
   clock.end("unit box");
   progress.update("sampling", -1.0);
   const SamplingTiles tiles{o.limits.tiles, nullptr};
-  LocalSampling<D> sampling = estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines);
-  if (drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept)) {
+  LocalSampling<D> sampling =
+      estimate_local_sampling(data, o.limits.threads, fields, progress, tiles, o.sampling.scan_lines, o.sampling.outlier_factor);
+  if (sampling.stopped_at_isolated) {
     // The box and every scale follow the data without them.
+    drop_isolated(sampling, o.sampling.outlier_factor, in.points, in.kept);
     r.outlier_points = input.size() - r.skipped_points - r.duplicate_points - in.points.size();
     require_spanning(in.points);
     box = UnitBoxTransform<D>::fit_ball(in.points, kDataRadius);

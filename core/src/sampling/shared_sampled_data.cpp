@@ -47,8 +47,9 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
     });
     halo = std::move(local.halo);
     index.emplace(std::move(local.points));
-    sampling = estimate_local_sampling(*index, o.limits.threads, fields, progress, {std::max(1, o.limits.tiles / int(workers_of(x))), &halo}, o.sampling.scan_lines);
-    if (pass == 1 || o.sampling.outlier_factor <= 0.0) break;
+    sampling = estimate_local_sampling(*index, o.limits.threads, fields, progress, {std::max(1, o.limits.tiles / int(workers_of(x))), &halo},
+                                       o.sampling.scan_lines, pass == 0 ? o.sampling.outlier_factor : 0.0);
+    if (!sampling.stopped_at_isolated) break;
     // drop_isolated on this worker's points; the box and every scale follow the data without them.
     std::size_t n = 0;
     for (std::size_t i = 0; i < run.points.size(); ++i) {
@@ -56,7 +57,6 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
       if (!(sampling.gap[at] > o.sampling.outlier_factor * sampling.spacing[at])) run.points[n++] = run.points[i];
     }
     const std::size_t dropped = sum_over_workers(x, run.points.size() - n);
-    if (dropped == 0) break;
     run.points.resize(n);
     const std::vector<std::size_t> runs = all_gather(x, n);
     run.global_first = 0;
