@@ -34,7 +34,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
   check_options(o);
   // Before anything is allocated for the points.
-  const Index max_vertices = o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size());
+  if (o.limits.max_vertices <= 0) require_cloud_fits<D>(o, input.size());
   ReconstructionResult<D> r;
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
@@ -79,6 +79,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.spacing = spacing / box.scale();
 
   // 4. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
+  const Index max_vertices =
+      o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size(), data.points().size());
   AdaptiveMesh<D> adaptive;
   if (anisotropic) {
     adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);

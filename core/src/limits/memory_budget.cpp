@@ -25,19 +25,24 @@ std::string gib(double bytes) {
 }
 
 template <int D>
-Index memory_limited_vertices(const ReconstructionOptions& o, std::size_t points) {
-  const double budget = memory_budget(o);
-  const double for_points = double(points) * kBytesPerPoint;
-  const double vertices = (budget - for_points) / kBytesPerVertex<D>;
-  if (vertices < 1e4) {
-    throw ResourceLimit(std::to_string(points) + " points need about " + gib(for_points + 1e4 * kBytesPerVertex<D>) +
-                            ", more than the memory limit of " + gib(budget),
-                        "raise max_memory (lsrecon --max-memory GiB) or subsample the cloud");
+void require_cloud_fits(const ReconstructionOptions& o, std::size_t points) {
+  const double budget = memory_budget(o), needed = double(points) * kBytesPerPoint + 1e4 * kBytesPerVertex<D>;
+  if (needed > budget) {
+    throw ResourceLimit(std::to_string(points) + " points need about " + gib(needed) + ", more than the memory limit of " + gib(budget),
+                        "raise max_memory (lsrecon --max-memory GiB), subsample the cloud, or share it among MPI ranks (lsrecon-mpi)");
   }
-  return Index(std::min(vertices, 2e9));
 }
 
-template Index memory_limited_vertices<2>(const ReconstructionOptions& o, std::size_t points);
-template Index memory_limited_vertices<3>(const ReconstructionOptions& o, std::size_t points);
+template <int D>
+Index memory_limited_vertices(const ReconstructionOptions& o, std::size_t points, std::size_t sample) {
+  const double left_out = points > sample ? double(points - sample) : 0.0;
+  const double held = double(sample) * kBytesPerPoint + left_out * kBytesPerLeftOutPoint;
+  return Index(std::clamp((memory_budget(o) - held) / kBytesPerVertex<D>, 1e4, 2e9));
+}
+
+template void require_cloud_fits<2>(const ReconstructionOptions& o, std::size_t points);
+template void require_cloud_fits<3>(const ReconstructionOptions& o, std::size_t points);
+template Index memory_limited_vertices<2>(const ReconstructionOptions& o, std::size_t points, std::size_t sample);
+template Index memory_limited_vertices<3>(const ReconstructionOptions& o, std::size_t points, std::size_t sample);
 
 }  // namespace lsr::detail

@@ -10,11 +10,17 @@
 
 namespace lsr::detail {
 
-// Peak memory per input point and per mesh vertex, measured on random samples and rounded up:
-// trefoil 200k and 1M points at the same 327k vertices peaked at 495 and 929 MiB (0.56 KB per
-// point), and with that the 200k sphere, torus and trefoil at 0.99, 0.97 and 1.2 KB per 3D
-// vertex. 2D: 2 KB per vertex, measured before G^T stopped being stored.
+// Peak memory per input point and per mesh vertex, measured and rounded up. The sampling's peak
+// (trefoil 200k and 1M points at the same 327k vertices peaked at 495 and 929 MiB: 0.56 KB per
+// point; a 10M-point torus scan 0.51 KB) is over before the mesh is built. From the mesh on, a
+// run holds the sample at the mesh's size (mesh_resolution_data.h) at kBytesPerPoint a point,
+// each point left out of it at kBytesPerLeftOutPoint (its place in the input, its normal, the
+// kept point it counts with: about 120 bytes on that scan, whose 0.2M-point sample and 629k-vertex
+// mesh took at most 2.1 GiB after the sampling's 5.0), and the mesh: the 200k sphere, torus and
+// trefoil at 0.99, 0.97 and 1.2 KB per 3D vertex. 2D: 2 KB per vertex, measured before G^T
+// stopped being stored.
 constexpr double kBytesPerPoint = 1000.0;
+constexpr double kBytesPerLeftOutPoint = 150.0;
 template <int D>
 constexpr double kBytesPerVertex = D == 3 ? 1300.0 : 2000.0;
 
@@ -23,9 +29,13 @@ double memory_budget(const ReconstructionOptions& o);
 
 std::string gib(double bytes);
 
-// The mesh vertices that fit in the budget beside the points; refuses a cloud that alone
-// would not.
+// Refuses a cloud whose sampling, with the smallest mesh (1e4 vertices), would not fit.
 template <int D>
-Index memory_limited_vertices(const ReconstructionOptions& o, std::size_t points);
+void require_cloud_fits(const ReconstructionOptions& o, std::size_t points);
+
+// The mesh vertices that fit in the budget beside `points` of which `sample` were kept (all of
+// them: sample = points; under MPI, rank 0 holds its share of the points and the whole sample).
+template <int D>
+Index memory_limited_vertices(const ReconstructionOptions& o, std::size_t points, std::size_t sample);
 
 }  // namespace lsr::detail

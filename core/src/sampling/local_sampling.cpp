@@ -6,11 +6,8 @@
 #include "sampling/spacing_over_gaps.h"
 #include "sampling/tile_runs.h"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <omp.h>
 

@@ -42,10 +42,13 @@ TEST(OptionChecks, EachOptionOutOfRangeIsRefusedWithAHint) {
 TEST(MemoryBudget, TheVerticesThatFitBesideThePoints) {
   ReconstructionOptions o;
   o.limits.max_memory = 1e9;
-  // (budget - 1 KB per point) / 1.3 KB per 3D vertex.
-  EXPECT_EQ(memory_limited_vertices<3>(o, 100000), Index((1e9 - 1e8) / 1300.0));
-  EXPECT_EQ(memory_limited_vertices<2>(o, 100000), Index((1e9 - 1e8) / 2000.0));
-  EXPECT_THROW(memory_limited_vertices<3>(o, 1000000), ResourceLimit);
+  // (budget - 1 KB per point kept - 150 bytes per point left out) / 1.3 KB per 3D vertex.
+  EXPECT_EQ(memory_limited_vertices<3>(o, 100000, 100000), Index((1e9 - 1e8) / 1300.0));
+  EXPECT_EQ(memory_limited_vertices<2>(o, 100000, 100000), Index((1e9 - 1e8) / 2000.0));
+  EXPECT_EQ(memory_limited_vertices<3>(o, 1000000, 100000), Index((1e9 - 1e8 - 9e5 * 150.0) / 1300.0));
+  EXPECT_EQ(memory_limited_vertices<3>(o, 100000, 300000), Index((1e9 - 3e8) / 1300.0));  // rank 0: the whole sample
+  EXPECT_NO_THROW(require_cloud_fits<3>(o, 900000));
+  EXPECT_THROW(require_cloud_fits<3>(o, 1000000), ResourceLimit);
 }
 
 }  // namespace
