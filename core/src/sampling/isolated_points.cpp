@@ -18,6 +18,7 @@ bool isolated_points_found(const NearestPointIndex<D>& data, const LargeVector<I
   for (std::size_t i = first; i < tiles.end(); ++i) {
     if (s.gap[i] > factor * s.spacing[i]) candidates.push_back(i);
   }
+  if (tiles.sum(long(candidates.size())) == 0) return false;  // the usual case: nothing to raise or exchange
   std::vector<double> spacing(candidates.size());
   for (std::size_t c = 0; c < candidates.size(); ++c) spacing[c] = s.spacing[candidates[c]];
   if (raised) {
