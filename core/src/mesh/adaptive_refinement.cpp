@@ -133,6 +133,18 @@ void leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min
   }
 }
 
+// Whether the simplex's vertices' bounding box meets the region (the whole box if none).
+template <int D>
+bool meets_region(const KuhnBisectionForest<D>& forest, Index s, const AdaptiveMeshOptions& o) {
+  if (o.region_lo.empty()) return true;
+  for (int a = 0; a < D; ++a) {
+    double lo = 2.0, hi = -1.0;
+    for (Index v : forest.simplices()[s].v) lo = std::min(lo, forest.vertices()[v][a]), hi = std::max(hi, forest.vertices()[v][a]);
+    if (hi < o.region_lo[std::size_t(a)] || lo > o.region_hi[std::size_t(a)]) return false;
+  }
+  return true;
+}
+
 // What a candidate's search is known to return before it runs.
 enum class Certain : char { no, marked, unmarked };
 
@@ -274,6 +286,11 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
                            std::to_string(data.points().size()) + " points",
                        "pass one size per data point, or none");
   }
+  if (o.region_lo.size() != o.region_hi.size() || !(o.region_lo.empty() || o.region_lo.size() == std::size_t(D))) {
+    throw InvalidInput("the region has " + std::to_string(o.region_lo.size()) + " and " + std::to_string(o.region_hi.size()) +
+                           " coordinates",
+                       "pass " + std::to_string(D) + " coordinates for each corner, or none");
+  }
   AdaptiveMeshOptions predicted = o;
   predicted.h_min = typical_size(o);
   const double resolution = 1.0 / predicted.h_min;
@@ -316,7 +333,12 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     // faster far out).
     const std::size_t nc = cand.nodes.size();
     witness.resize(forest.simplices().size(), kNoWitness);
-    const std::vector<Certain> certain = certain_outcomes(forest, cand, witness, data.points(), o, largest_local, nearby);
+    std::vector<Certain> certain = certain_outcomes(forest, cand, witness, data.points(), o, largest_local, nearby);
+    // Outside the region nothing is marked; no child inside reads these witnesses (a child
+    // meeting the region has a parent that meets it).
+    for (std::size_t i = 0; i < nc; ++i) {
+      if (!meets_region(forest, cand.nodes[i], o)) certain[i] = Certain::unmarked;
+    }
     searched.clear();
     bound.clear();
     for (std::size_t i = 0; i < nc; ++i) {

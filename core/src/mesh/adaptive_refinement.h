@@ -32,6 +32,10 @@ struct AdaptiveMeshOptions {
   /// Refuse (lsr::MeshTooLarge) a mesh predicted to need more vertices than this.
   Index max_vertices = 20'000'000;
   int threads = 0;  ///< threads for the distance queries, 0 for all cores
+  /// Optional box [region_lo, region_hi] (D coordinates each, or both empty for the whole box):
+  /// only simplices meeting it are refined by the rule above, the others only where the
+  /// conforming closure needs. A tile's mesh (tile_mesh.h).
+  std::vector<double> region_lo, region_hi;
 };
 
 /// @brief Thrown when the requested resolution would need more vertices than allowed.
