@@ -95,5 +95,36 @@ TEST(StitchedExtraction, TilesWithTheOwnersValuesWeldIntoTheWholeMeshsSurface) {
   EXPECT_FALSE(analyze_surface(apart.vertices, apart.facets).watertight);
 }
 
+// In 2D the pieces are curves: with the owners' values they close into the circle's one loop.
+TEST(StitchedExtraction, CurvesOfFourTilesCloseIntoOneLoop) {
+  const Circle circle{Vec<2>(0.5, 0.5), 0.3};
+  const Points<2> points = circle.sample(20000);
+  const AdaptiveMeshOptions o = two_sizes<2>(points, 1.0 / 1024);
+  auto value = [&](int t, const Vec<2>& x) { return circle.signed_distance(x) + 0.25 * o.h_min * double(t + 1) / 4.0 * std::sin(41.0 * x[0] + 7.0 * x[1]); };
+  auto fields = [&](bool owners) {
+    std::vector<TileField<2>> out;
+    for (int t = 0; t < 4; ++t) {
+      Vec<2> lo, hi;
+      tile_box<2>(t, kCut, lo, hi);
+      TileField<2> f;
+      f.core = tile_core<2>(tile_mesh<2>(points, o, lo, hi, 2.0 * o.h_max), lo, hi).mesh;
+      for (const Vec<2>& x : f.core.vertices) {
+        int owner = t;
+        for (int k = 0; owners && k < 4; ++k) {
+          Vec<2> a, b;
+          tile_box<2>(k, kCut, a, b);
+          if (((x - a).array() >= 0.0).all() && ((b - x).array() > 0.0).all()) owner = k;
+        }
+        f.u.push_back(value(owner, x));
+      }
+      out.push_back(std::move(f));
+    }
+    return out;
+  };
+  const LevelSetMesh<2> stitched = stitched_zero_level_set<2>(fields(true));
+  EXPECT_EQ(closed_loops(stitched).size(), 1u);
+  EXPECT_THROW(closed_loops(stitched_zero_level_set<2>(fields(false))), InvalidInput);
+}
+
 }  // namespace
 }  // namespace lsr
