@@ -133,10 +133,9 @@ void leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min
   }
 }
 
-// Whether the simplex's vertices' bounding box meets the region (the whole box if none).
+// Whether the simplex's vertices' bounding box meets the region.
 template <int D>
 bool meets_region(const KuhnBisectionForest<D>& forest, Index s, const AdaptiveMeshOptions& o) {
-  if (o.region_lo.empty()) return true;
   for (int a = 0; a < D; ++a) {
     double lo = 2.0, hi = -1.0;
     for (Index v : forest.simplices()[s].v) lo = std::min(lo, forest.vertices()[v][a]), hi = std::max(hi, forest.vertices()[v][a]);
@@ -336,7 +335,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     std::vector<Certain> certain = certain_outcomes(forest, cand, witness, data.points(), o, largest_local, nearby);
     // Outside the region nothing is marked; no child inside reads these witnesses (a child
     // meeting the region has a parent that meets it).
-    for (std::size_t i = 0; i < nc; ++i) {
+    for (std::size_t i = 0; i < nc && !o.region_lo.empty(); ++i) {
       if (!meets_region(forest, cand.nodes[i], o)) certain[i] = Certain::unmarked;
     }
     searched.clear();

@@ -34,7 +34,8 @@ struct AdaptiveMeshOptions {
   int threads = 0;  ///< threads for the distance queries, 0 for all cores
   /// Optional box [region_lo, region_hi] (D coordinates each, or both empty for the whole box):
   /// only simplices meeting it are refined by the rule above, the others only where the
-  /// conforming closure needs. A tile's mesh (tile_mesh.h).
+  /// conforming closure needs: a tile's mesh, whose core (tile_core.h) is the whole mesh's
+  /// once the region reaches two background cells past it (tests/core/tile_mesh_test.cpp).
   std::vector<double> region_lo, region_hi;
 };
 
