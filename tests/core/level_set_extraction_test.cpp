@@ -58,20 +58,6 @@ double interpolation_bound(int dim, double h, double kappa_max) {
   return kappa_max * L * L / (8.0 * (1.0 - kappa_max * L));
 }
 
-void expect_closed_surface(const LevelSetMesh<3>& s, int components, std::vector<int> genus) {
-  const SurfaceTopology t = analyze_surface(s.vertices, s.facets);
-  EXPECT_TRUE(t.watertight);
-  EXPECT_TRUE(t.edge_manifold);
-  EXPECT_TRUE(t.vertex_manifold);
-  EXPECT_TRUE(t.oriented);
-  EXPECT_EQ(t.degenerate_triangles, 0);
-  EXPECT_EQ(t.components, components);
-  std::vector<int> sorted = t.genus;
-  std::sort(sorted.begin(), sorted.end());
-  EXPECT_EQ(sorted, genus);
-  EXPECT_GT(t.signed_volume, 0.0);  // outward normals: towards u > 0
-}
-
 TEST(LevelSetExtraction, CircleIsOneClosedCounterClockwiseLoopWithSecondOrderError) {
   const Circle c{Vec<2>(0.5, 0.5), 0.3};
   auto sdf = [&](const Vec<2>& p) { return c.signed_distance(p); };
@@ -103,7 +89,7 @@ TEST(LevelSetExtraction, SphereIsAClosedGenusZeroSurfaceWithSecondOrderError) {
   double previous = 0.0;
   for (double h : {1.0 / 64, 1.0 / 128}) {
     const Extracted<3> e = extract<3>(samples, h, sdf);
-    expect_closed_surface(e.zero_set, 1, {0});
+    testing::expect_closed_surface(e.zero_set, 1, {0});
     EXPECT_LE(e.max_error, interpolation_bound(3, h, 1.0 / s.radius));
     if (previous > 0.0) {
       EXPECT_GE(std::log2(previous / e.rms_error), 1.5);
@@ -117,7 +103,7 @@ TEST(LevelSetExtraction, TorusHasGenusOne) {
   const double h = 1.0 / 128;
   const Extracted<3> e =
       extract<3>(t.sample(80000), h, [&](const Vec<3>& p) { return t.signed_distance(p); });
-  expect_closed_surface(e.zero_set, 1, {1});
+  testing::expect_closed_surface(e.zero_set, 1, {1});
   EXPECT_LE(e.max_error, interpolation_bound(3, h, 1.0 / t.minor_radius));
 }
 
@@ -131,7 +117,7 @@ TEST(LevelSetExtraction, TwoDisjointSpheresAreTwoComponents) {
   const double h = 1.0 / 128;
   const Extracted<3> e = extract<3>(
       samples, h, [&](const Vec<3>& p) { return union_signed_distance<Sphere, 3>(spheres, p); });
-  expect_closed_surface(e.zero_set, 2, {0, 0});
+  testing::expect_closed_surface(e.zero_set, 2, {0, 0});
   EXPECT_LE(e.max_error, interpolation_bound(3, h, 1.0 / 0.15));
 }
 
@@ -140,7 +126,7 @@ TEST(LevelSetExtraction, ZerosOnMeshVerticesCountAsPositive) {
   const Sphere guide{Vec<3>(0.5, 0.5, 0.5), 0.25};
   auto cube = [](const Vec<3>& p) { return (p - Vec<3>::Constant(0.5)).cwiseAbs().maxCoeff() - 0.25; };
   const Extracted<3> e = extract<3>(guide.sample(5000), 1.0 / 32, cube);
-  expect_closed_surface(e.zero_set, 1, {0});
+  testing::expect_closed_surface(e.zero_set, 1, {0});
 }
 
 // Vertices numbered by their edges and facets in simplex order: the same surface whatever the

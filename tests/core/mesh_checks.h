@@ -3,8 +3,12 @@
 /// @brief Test helpers: conformity and shape checks of simplicial meshes of the unit box.
 #pragma once
 
+#include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/simplex_geometry.h"
 #include "mesh/adaptive_refinement.h"
+#include "surface/surface_topology.h"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -72,6 +76,21 @@ double shape_quality(const SimplexMesh<D>& mesh, Index s) {
   }
   const double factorial = D == 2 ? 2.0 : 6.0;
   return factorial * signed_measure(mesh, s) / std::pow(longest, D);
+}
+
+/// A closed, manifold, outward-oriented surface with these components and genera (any order).
+inline void expect_closed_surface(const LevelSetMesh<3>& s, int components, std::vector<int> genus) {
+  const SurfaceTopology t = analyze_surface(s.vertices, s.facets);
+  EXPECT_TRUE(t.watertight);
+  EXPECT_TRUE(t.edge_manifold);
+  EXPECT_TRUE(t.vertex_manifold);
+  EXPECT_TRUE(t.oriented);
+  EXPECT_EQ(t.degenerate_triangles, 0);
+  EXPECT_EQ(t.components, components);
+  std::vector<int> sorted = t.genus;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, genus);
+  EXPECT_GT(t.signed_volume, 0.0);  // outward normals: towards u > 0
 }
 
 }  // namespace lsr::testing

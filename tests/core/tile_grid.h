@@ -17,6 +17,14 @@ void tile_box(int t, double cut, Vec<D>& lo, Vec<D>& hi) {
   for (int a = 0; a < D; ++a) lo[a] = (t >> a & 1) ? cut : 0.0, hi[a] = (t >> a & 1) ? 2.0 : cut;
 }
 
+// The tile whose core holds x.
+template <int D>
+int tile_owner(const Vec<D>& x, double cut) {
+  int t = 0;
+  for (int a = 0; a < D; ++a) t |= int(x[a] >= cut) << a;
+  return t;
+}
+
 // Marks the whole mesh's rule would make in the region are made from the data within
 // 2 radius + size / grading of it: a simplex meeting the region has its centroid within its
 // radius of it, and searches within radius + size / grading of its centroid. The radius of a

@@ -25,8 +25,10 @@ struct TileField {
 
 /// @brief {u = 0} over the tiles, welded by the coordinates of its points' edge ends. A point is
 /// placed on its edge from the end that is lower in lexicographic order, so the same edge gives
-/// the same point in every tile. Vertices are numbered as the tiles first reach them, in order;
-/// facets follow the tiles. `sources` is left empty (the edges are the tiles').
+/// the same point in every tile (with other values at its ends, the first tile's point; with
+/// other signs, an edge crossed in one tile only: a hole). Vertices are numbered as the tiles
+/// first reach them, in order; facets follow the tiles. `sources` is left empty (the edges are
+/// the tiles').
 /// @throw InvalidInput as extract_zero_level_set, for any tile.
 template <int D>
 LevelSetMesh<D> stitched_zero_level_set(const std::vector<TileField<D>>& tiles, double edge_margin = 1e-9, int threads = 0);
