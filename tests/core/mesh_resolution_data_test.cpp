@@ -78,50 +78,36 @@ TEST(MeshResolutionData, ThinsTheSamplingWithItsPoints) {
   }
 }
 
-// The stages after the sampling block the flood from the walls within 2 scales of the data
-// (start_fields.h): the sample must cover the cloud within each point's mesh size, which a random
-// choice alone does not (on a curve its gaps are exponential, some of several sizes).
-template <int D>
-void expect_covered(const Points<D>& points, const std::vector<double>& size, const LeftOut<D>& out, const NearestPointIndex<D>& kept) {
-  ASSERT_FALSE(out.kept.empty());
-  ASSERT_LT(out.kept.size(), points.size());
-  std::vector<double> d;
-  kept.query(points, d);
-  for (std::size_t i = 0; i < points.size(); ++i) EXPECT_LE(d[i], size[i]) << i;
-}
-
-TEST(MeshResolutionData, EveryPointIsWithinItsMeshSizeOfAKeptPoint) {
-  {
-    Points<2> curve(20000);
-    std::mt19937 random(3);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * std::acos(-1.0));
-    for (auto& p : curve) {
-      const double t = angle(random);
-      p = Vec<2>(std::cos(t), std::sin(t));
-    }
-    NearestPointIndex<2> data(curve);
-    LocalSampling<2> s = estimate_local_sampling(data, 1);
-    std::vector<double> scale = local_scales(s);
-    const std::vector<double> size(scale.size(), 3.0 * median(scale));
-    std::vector<double> raised = scale;
-    for (std::size_t i = 0; i < raised.size(); ++i) raised[i] = std::max(raised[i], size[i]);
-    // The control: the random choice leaves points farther than their size.
-    const std::vector<Index> random_sample = mesh_resolution_sample<2>(data, scale, raised, false, 1);
-    Points<2> chosen;
-    for (const Index i : random_sample) chosen.push_back(curve[std::size_t(i)]);
-    std::vector<double> d;
-    NearestPointIndex<2>(chosen).query(curve, d);
-    EXPECT_GT(std::count_if(d.begin(), d.end(), [&](double x) { return x > size[0]; }), 10);
-    const LeftOut<2> out = keep_mesh_resolution(data, s, scale, size, 1);
-    expect_covered(curve, size, out, data);
+// The tagged start's flood is blocked within 2 scales of the data (start_fields.h): on a curve
+// the sample must cover the cloud within each point's mesh size, which the random choice alone
+// does not (its gaps are exponential, some of several sizes). On a surface such holes are rare
+// and the covering is not asked for (mesh_resolution_data.cpp).
+TEST(MeshResolutionData, OnACurveEveryPointIsWithinItsMeshSizeOfAKeptPoint) {
+  Points<2> curve(20000);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * std::acos(-1.0));
+  for (auto& p : curve) {
+    const double t = angle(random);
+    p = Vec<2>(std::cos(t), std::sin(t));
   }
-  const Points<3> sphere = random_sphere(20000, Vec<3>::Zero());
-  NearestPointIndex<3> data(sphere);
-  LocalSampling<3> s = estimate_local_sampling(data, 1);
+  NearestPointIndex<2> data(curve);
+  LocalSampling<2> s = estimate_local_sampling(data, 1);
   std::vector<double> scale = local_scales(s);
   const std::vector<double> size(scale.size(), 3.0 * median(scale));
-  const LeftOut<3> out = keep_mesh_resolution(data, s, scale, size, 1);
-  expect_covered(sphere, size, out, data);
+  std::vector<double> raised = scale;
+  for (std::size_t i = 0; i < raised.size(); ++i) raised[i] = std::max(raised[i], size[i]);
+  std::vector<double> d;
+  // The control: the random choice leaves points farther than their size.
+  const std::vector<Index> random_sample = mesh_resolution_sample<2>(data, scale, raised, false, 1);
+  Points<2> chosen;
+  for (const Index i : random_sample) chosen.push_back(curve[std::size_t(i)]);
+  NearestPointIndex<2>(chosen).query(curve, d);
+  EXPECT_GT(std::count_if(d.begin(), d.end(), [&](double x) { return x > size[0]; }), 10);
+  const LeftOut<2> out = keep_mesh_resolution(data, s, scale, size, 1);
+  ASSERT_FALSE(out.kept.empty());
+  ASSERT_LT(out.kept.size(), curve.size());
+  data.query(curve, d);
+  for (std::size_t i = 0; i < curve.size(); ++i) EXPECT_LE(d[i], size[i]) << i;
 }
 
 // The discs over holes and the closure of open sides stand on the rims: thinning keeps them.

@@ -26,9 +26,9 @@ struct LeftOut {
 
 /// @brief Thins data, sampling and point_scale in place to mesh_resolution_sample's points,
 /// the sample at the mesh size of each point (mesh_size: local_mesh_sizes of point_scale), the
-/// rim points (LocalSampling::rim), and the points farther than their size from those: every
-/// point lies within its size of a kept point. Nothing changes where no size exceeds its
-/// point's scale.
+/// rim points (LocalSampling::rim), and in 2D the points farther than their size from those:
+/// on a curve every point lies within its size of a kept point. Nothing changes where no size
+/// exceeds its point's scale.
 /// @param threads 0 for all cores
 /// @param halo data holds a worker's run and its halo (cloud_halo.h): its run is thinned, to
 /// the bit as one process thins it, sampling and point_scale to the run's kept points; data is
