@@ -5,23 +5,16 @@
 /// -> fitted surface -> back to input coordinates.
 #include "lsrecon/core/level_set_reconstruction.h"
 
-#include "evolution/drives.h"
-#include "evolution/evolution_settings.h"
-#include "evolution/front_evolution.h"
-#include "evolution/pinning.h"
+#include "evolution/front_on_mesh.h"
 #include "evolution/renormalization.h"
 #include "evolution/stopping_test.h"
 #include "fit/fitted_surface.h"
 #include "limits/memory_budget.h"
 #include "limits/option_checks.h"
 #include "mesh/data_mesh.h"
-#include "mesh/point_location.h"
-#include "mesh/vertex_fields.h"
-#include "mesh/vertices_near.h"
 #include "sampling/mesh_resolution_data.h"
 #include "sampling/sampled_data.h"
 #include "stage_clock.h"
-#include "start/start_fields.h"
 #include "surface/closed_surface.h"
 
 namespace lsr {
@@ -92,74 +85,28 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   r.mesh_simplices = Index(mesh.simplices.size());
   clock.end("mesh");
 
-  // 5. The distance d at the vertices, each vertex's scale, each point's place in the mesh.
-  progress.update("distance", -1.0);
-  const VertexFields<D> at_vertex = vertex_fields(data, mesh, sampling, point_scale, o.limits.threads);
+  // 5-8. The distance at the vertices, the operators, u0 and the time loop; the best iterate.
+  FrontOnMesh<D> front = front_on_mesh(*sampled, point_scale, adaptive, o, hole_radius, custom_start, r, progress, clock);
+  Eigen::VectorXd& best = front.best;
+  const VertexFields<D>& at_vertex = front.at_vertex;
   const Eigen::VectorXd& scale = at_vertex.scale;
-  const std::vector<double>& dist = at_vertex.dist;
-  const VertexCells cells = pin_cells(scale, data.points().size(), dist, at_vertex.nearest, o.evolution.pin_factor);
-  const std::vector<Location<D>> at = anisotropic ? locate_all(mesh, data.points(), o.limits.threads)
-                                                  : locate_all(adaptive, data.points(), o.limits.threads);
-  release_forest(adaptive);  // its last use: a third of the peak at 200k points
-  clock.end("distance");
-
-  // 6. The P1 operators of the scheme.
-  progress.update("operators", -1.0);
-  VertexNeighbours neighbours;
-  P1Operators<D> ops;
-  {
-    const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, o.evolution.solver == LinearSolver::gmres_reference);
-    neighbours = vertex_neighbours(mesh, geometry, o.limits.threads);
-    ops = assemble_p1_operators(mesh, geometry, o.evolution.solver == LinearSolver::gmres_reference, &neighbours, o.limits.threads);
-  }
-  clock.end("operators");
-
-  // 7. The settings, the attraction (spanned holes included) and u0.
-  progress.update("setup", -1.0);
-  const EvolutionSettings settings = resolve_evolution_settings(
-      o, scale, at_vertex.noise, point_scale, spacing, o.start.initial_front != InitialFront::tagged || custom_start);
-  r.time_step = settings.step.time_step;
-  r.alpha = settings.step.alpha;
-  r.curvature_weight = settings.step.curvature_weight;
-  r.tolerance = settings.median_eps / box.scale();
-  Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.sampling.gap_factor, hole_radius, rims_only, o.limits.threads);
-  const OpenSideInputs<D> open{data, sampling.normals, point_scale, dist, at_vertex.nearest};
-  const StartField<D> start = start_field(mesh, neighbours, data, sampling, attract.d, at_vertex.distance, dist, scale, o, hole_radius,
-                                          settings.schedule.band, r.h_min, custom_start, box, &open);
-  r.sealed_cavities = start.sealed_cavities;
-  r.open_side_points = start.held.empty() ? 0 : start.open_side_points;
-  r.tagged_start = start.tagged;
-  clock.end("setup");
-  // Within a hole's radius of a vertex over it; empty without spanned holes.
-  std::vector<char> near_hole = attract.over_hole.empty() ? std::vector<char>() : near_any(mesh.vertices, attract.over_hole, hole_radius, o.limits.threads);
-  std::vector<char> near_opening = start.near_opening;
-  close_pocket(start, attract.d, near_hole, near_opening);
-  const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
-
-  // 8. The time loop: the front evolves to the data; the best iterate is kept.
-  const FrontProblem<D> problem{mesh,  neighbours,         ops,   at,   cells, settings.eps, settings.reach,
-                                settings.front_tolerance, scale, dist, away,  near_hole, left_out.represented};
-  FrontEvolution<D> evolution(problem, o, settings.schedule, settings.step);
-  evolution.run(start.u, attract.d, r, progress, clock, settings.median_eps, box.scale());
-  r.residual = evolution.best_residual() * settings.median_eps / box.scale();
-  Eigen::VectorXd& best = evolution.best();
 
   // 9. The input's normals, then the surface: the fit through the data, or the front itself.
-  const Points<D> normals = oriented_normals(sampling, at, ops.gradient_times(best));
+  const Points<D> normals = oriented_normals(sampling, front.at, front.ops.gradient_times(best));
   if (!in.kept.empty()) r.point_normals = in.input_normals(every_point_normals(left_out, normals), r.input_points);
   progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
   if (o.output.fit_surface) {
     // The fit's band is measured in distances to the front: the best iterate as one.
-    if (!evolution.best_is_distance()) renormalize(mesh, neighbours, best, settings.schedule.band, o.limits.threads);
-    ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
+    if (!front.best_is_distance) renormalize(mesh, front.neighbours, best, front.band, o.limits.threads);
+    front.ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
-    attach_fit(r, mesh, neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, attract.over_hole, near_opening, data,
+    attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole, front.near_opening, data,
                normals, o.output.volume_mesh, o.limits.threads);
     if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
     clock.end("fit");
   } else {
-    r.output_level = o.output.level_through_data ? median_on_data(at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
+    r.output_level = o.output.level_through_data ? median_on_data(front.at, best) / box.scale() : 0.0;
+    attach_front(r, mesh, front.ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
     clock.end("extract");
   }
 
