@@ -113,6 +113,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     lsr::ReconstructionOptions options;
     options.sampling.hole_radius = s.hole_radius;
     options.mesh.max_resolution = s.max_resolution;
+    options.limits.solve_tiles = s.solve_tiles;
     options.mesh.anisotropic = method == "lsrecon-anisotropic";
     ls.setOptions(options);
     ls.reconstruct(out.mesh);

@@ -21,6 +21,7 @@ extern const std::vector<std::string> kMethods;
 struct LsreconOptions {
   double hole_radius = -1.0;    ///< lsrecon's hole_radius (negative: automatic)
   double max_resolution = 0.0;  ///< lsrecon's max_resolution (0: its default)
+  int solve_tiles = 1;          ///< lsrecon's solve_tiles (1: one mesh)
 };
 
 struct Produced {

@@ -62,8 +62,7 @@ struct Settings {
   lsr::SamplingVariant variant;
   int seed = int(lsr::demos::kDefaultSeed);
   lsr::ScannerSettings scanner;  ///< used when scanner.views > 0
-  double hole_radius = -1.0;  ///< lsrecon's hole_radius option (negative: automatic)
-  double max_resolution = 0.0;  ///< lsrecon's max_resolution option (0: its default)
+  lsr::demos::LsreconOptions lsrecon;  ///< passed on to lsrecon
   int repeat = 1;  ///< runs per (case, method), interleaved; the row of the median time is kept
   bool save_points = false;  ///< also write each generated cloud as DIR/<case>-points.ply
 };
@@ -169,7 +168,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   }
   if (s.save_points && s.input.empty()) lsr::adapters::write_points(s.out + "/" + case_name + "-points.ply", c.points);
   lsr::demos::Stopwatch clock;
-  const Produced p = run_method(method, c, {s.hole_radius, s.max_resolution});
+  const Produced p = run_method(method, c, s.lsrecon);
   const double seconds = clock.lap();
   const double memory = lsr::demos::peak_memory_mib();
   lsr::Points<3> vertices;
@@ -209,7 +208,8 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   command << self << " --run " << case_name << '/' << method << " --out '" << s.out << "'"
           << (s.input.empty() ? "" : " --input '" + s.input + "'") << " --points " << s.points << " --noise "
           << s.variant.noise << " --holes " << s.variant.holes << " --density-ratio " << s.variant.density_ratio
-          << " --seed " << s.seed << " --hole-radius " << s.hole_radius << " --max-resolution " << s.max_resolution
+          << " --seed " << s.seed << " --hole-radius " << s.lsrecon.hole_radius << " --max-resolution " << s.lsrecon.max_resolution
+          << " --solve-tiles " << s.lsrecon.solve_tiles
           << " --scan-views " << s.scanner.views << " --scan-lines " << s.scanner.lines << " --scan-samples "
           << s.scanner.samples_per_line << (s.scanner.from_above ? " --from-above" : "") << " --scan-noise "
           << s.scanner.range_noise << " --misregistration " << s.scanner.registration_angle << " --misregistration-shift "
@@ -349,8 +349,9 @@ Settings parse(int argc, char** argv, std::string& run_case, std::string& run_me
       .number("misregistration-shift", "S", s.scanner.registration_shift, 0, 0.5,
               "per-view translation error, times the diagonal");
   line.group("lsrecon")
-      .number("hole-radius", "H", s.hole_radius, -1, 0.49, "lsrecon's --hole-radius")
-      .number("max-resolution", "R", s.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)");
+      .number("hole-radius", "H", s.lsrecon.hole_radius, -1, 0.49, "lsrecon's --hole-radius")
+      .number("max-resolution", "R", s.lsrecon.max_resolution, 0, 65536, "lsrecon's --max-resolution (0: its default)")
+      .number("solve-tiles", "K", s.lsrecon.solve_tiles, 1, 64, "lsrecon's --solve-tiles (1: one mesh)");
   line.group("internal").text("run", "CASE/METHOD", run, "run one case in this process (the parent run does)");
   line.parse(argc, argv, 0, 0, "no positional argument");
   if (cases != "all") s.cases = split(cases);

@@ -12,15 +12,92 @@
 #include "limits/memory_budget.h"
 #include "limits/option_checks.h"
 #include "mesh/data_mesh.h"
+#include "sampling/data_preparation.h"
 #include "sampling/mesh_resolution_data.h"
 #include "sampling/sampled_data.h"
 #include "stage_clock.h"
 #include "surface/closed_surface.h"
+#include "surface/facet_normals.h"
+#include "tiles/tiled_solve.h"
 
 namespace lsr {
 namespace {
 
 using namespace detail;
+
+// 4-9 on one mesh.
+template <int D>
+void surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+                         const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
+  const DataPoints<D>& in = sampled.in;
+  const UnitBoxTransform<D>& box = sampled.box;
+  const NearestPointIndex<D>& data = sampled.data;
+  const LocalSampling<D>& sampling = sampled.sampling;
+  std::vector<double>& point_scale = sampled.point_scale;  // raised where the mesh cannot resolve it
+  const bool anisotropic = o.mesh.anisotropic;
+
+  // 4. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
+  AdaptiveMesh<D> adaptive;
+  if (anisotropic) {
+    adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
+  } else {
+    adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
+  }
+  const SimplexMesh<D>& mesh = adaptive.mesh;
+  r.mesh_vertices = Index(mesh.vertices.size());
+  r.mesh_simplices = Index(mesh.simplices.size());
+  clock.end("mesh");
+
+  // 5-8. The distance at the vertices, the operators, u0 and the time loop; the best iterate.
+  FrontOnMesh<D> front = front_on_mesh(sampled, point_scale, adaptive, o, hole_radius, custom_start, r, progress, clock);
+  Eigen::VectorXd& best = front.best;
+  const VertexFields<D>& at_vertex = front.at_vertex;
+  const Eigen::VectorXd& scale = at_vertex.scale;
+
+  // 9. The input's normals, then the surface: the fit through the data, or the front itself.
+  const Points<D> normals = oriented_normals(sampling, front.at, front.ops.gradient_times(best));
+  if (!in.kept.empty()) r.point_normals = in.input_normals(every_point_normals(sampled.left_out, normals), r.input_points);
+  progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
+  if (o.output.fit_surface) {
+    // The fit's band is measured in distances to the front: the best iterate as one.
+    if (!front.best_is_distance) renormalize(mesh, front.neighbours, best, front.band, o.limits.threads);
+    front.ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
+    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
+    attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole, front.near_opening, data,
+               normals, o.output.volume_mesh, o.limits.threads);
+    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
+    clock.end("fit");
+  } else {
+    r.output_level = o.output.level_through_data ? median_on_data(front.at, best) / box.scale() : 0.0;
+    attach_front(r, mesh, front.ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
+    clock.end("extract");
+  }
+}
+
+// 4-9 in tiles (tiles/tiled_solve.h): the welded front at the level through the data; with the
+// fit, its vertices projected onto it.
+template <int D>
+void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+                      const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
+  // Each point's scale raised to its mesh size, as one mesh does (data_mesh.h).
+  const std::vector<double> size = local_mesh_sizes<D>(sampled.point_scale, o.mesh.h_min, o.mesh.max_resolution);
+  for (std::size_t i = 0; i < size.size(); ++i) sampled.point_scale[i] = std::max(sampled.point_scale[i], size[i]);
+  TiledFront<D> tiled = solve_in_tiles(sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
+  if (r.status == ReconstructionStatus::cancelled) return;
+  if (!sampled.in.kept.empty()) r.point_normals = sampled.in.input_normals(every_point_normals(sampled.left_out, tiled.normals), r.input_points);
+  r.surface = std::move(tiled.surface);
+  if (!o.output.fit_surface) r.output_level = tiled.level / sampled.box.scale();
+  if (o.output.fit_surface) {
+    progress.update("fit", -1.0);
+    const QuadricImplicit<D> fit = fit_quadrics(sampled.data, tiled.normals, sampled.point_scale, o.limits.threads, progress);
+    r.normals = fit.project(r.surface.vertices, o.limits.threads);
+    clock.end("fit");
+  }
+  // Without the fit, and where the fit's normal points into the facets: theirs.
+  const bool from_facets = r.normals.empty();
+  if (from_facets) r.normals.assign(r.surface.vertices.size(), Vec<D>::Zero());
+  set_facet_normals(r.surface, std::vector<char>(r.surface.vertices.size(), from_facets ? 1 : 0), r.normals);
+}
 
 template <int D>
 ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
@@ -60,54 +137,18 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     r.status = ReconstructionStatus::shared;  // worker 0 carries on alone
     return r;
   }
-  const DataPoints<D>& in = sampled->in;
   const UnitBoxTransform<D>& box = sampled->box;
-  const NearestPointIndex<D>& data = sampled->data;
-  const LocalSampling<D>& sampling = sampled->sampling;
-  std::vector<double>& point_scale = sampled->point_scale;  // raised where the mesh cannot resolve it
-  const LeftOut<D>& left_out = sampled->left_out;
-  const double spacing = sampled->spacing;
   r.noise = sampled->noise / box.scale();
-  r.scan_lines = sampling.scan_lines;
-  r.spacing = spacing / box.scale();
+  r.scan_lines = sampled->sampling.scan_lines;
+  r.spacing = sampled->spacing / box.scale();
 
-  // 4. The mesh, fine near the data, coarse away from it; anisotropic, long along flat data.
+  // 4-9. The mesh, the front on it and the surface; or the same in tiles.
   const Index max_vertices =
-      o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size(), data.points().size());
-  AdaptiveMesh<D> adaptive;
-  if (anisotropic) {
-    adaptive.mesh = anisotropic_data_mesh(data, sampling, point_scale, o, max_vertices, progress, r.h_min);
+      o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size(), sampled->data.points().size());
+  if (o.limits.solve_tiles > 1) {
+    surface_in_tiles(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
   } else {
-    adaptive = data_mesh(data, point_scale, o, max_vertices, progress, r.h_min);
-  }
-  const SimplexMesh<D>& mesh = adaptive.mesh;
-  r.mesh_vertices = Index(mesh.vertices.size());
-  r.mesh_simplices = Index(mesh.simplices.size());
-  clock.end("mesh");
-
-  // 5-8. The distance at the vertices, the operators, u0 and the time loop; the best iterate.
-  FrontOnMesh<D> front = front_on_mesh(*sampled, point_scale, adaptive, o, hole_radius, custom_start, r, progress, clock);
-  Eigen::VectorXd& best = front.best;
-  const VertexFields<D>& at_vertex = front.at_vertex;
-  const Eigen::VectorXd& scale = at_vertex.scale;
-
-  // 9. The input's normals, then the surface: the fit through the data, or the front itself.
-  const Points<D> normals = oriented_normals(sampling, front.at, front.ops.gradient_times(best));
-  if (!in.kept.empty()) r.point_normals = in.input_normals(every_point_normals(left_out, normals), r.input_points);
-  progress.update(o.output.fit_surface ? "fit" : "extract", -1.0);
-  if (o.output.fit_surface) {
-    // The fit's band is measured in distances to the front: the best iterate as one.
-    if (!front.best_is_distance) renormalize(mesh, front.neighbours, best, front.band, o.limits.threads);
-    front.ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
-    const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
-    attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole, front.near_opening, data,
-               normals, o.output.volume_mesh, o.limits.threads);
-    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
-    clock.end("fit");
-  } else {
-    r.output_level = o.output.level_through_data ? median_on_data(front.at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, front.ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
-    clock.end("extract");
+    surface_on_one_mesh(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
   }
 
   // 10. Back to the input's coordinates.

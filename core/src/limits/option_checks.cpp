@@ -52,6 +52,10 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.sampling.outlier_factor == 0.0 || (o.sampling.outlier_factor >= 1.0 && o.sampling.outlier_factor <= 1e3))) {
     bad("outlier_factor must be 0 (keep every point) or in [1, 1000]", "use 3");
   }
+  if (!(o.limits.solve_tiles >= 1 && o.limits.solve_tiles <= 64)) bad("solve_tiles must be in [1, 64] (tiles per axis)", "use 1 (one mesh) or e.g. 2");
+  if (o.limits.solve_tiles > 1 && (o.output.volume_mesh || o.mesh.anisotropic)) {
+    bad("the front solved in tiles gives no volume mesh and no anisotropic mesh", "use solve_tiles 1 for those");
+  }
   if (o.limits.max_vertices < 0) bad("max_vertices must be >= 0", "use 0 (from max_memory)");
   if (!(o.limits.max_memory >= 0.0 && o.limits.max_memory < 1e15)) bad("max_memory must be >= 0 bytes and finite", "use 0 (half the physical memory)");
   if (!(o.evolution.solver_tolerance > 0.0 && o.evolution.solver_tolerance < 1.0)) bad("solver_tolerance must be in (0, 1)", "use 1e-6");

@@ -5,20 +5,16 @@
 namespace lsr {
 
 template <int D>
-TileCore<D> tile_core(const SimplexMesh<D>& mesh, const Vec<D>& lo, const Vec<D>& hi) {
+TileCore<D> select_simplices(const SimplexMesh<D>& mesh, const std::vector<char>& keep) {
   TileCore<D> out;
-  std::vector<char> used(mesh.vertices.size(), 0);
-  for (const auto& s : mesh.simplices) {
-    Vec<D> c = Vec<D>::Zero();
-    for (Index v : s) c += mesh.vertices[std::size_t(v)];
-    c /= double(D + 1);
-    if (((c - lo).array() < 0.0).any() || ((hi - c).array() <= 0.0).any()) continue;
-    out.mesh.simplices.push_back(s);
-    for (Index v : s) used[std::size_t(v)] = 1;
-  }
   std::vector<Index> renumbered(mesh.vertices.size(), -1);
-  for (std::size_t v = 0; v < used.size(); ++v) {
-    if (!used[v]) continue;
+  for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
+    if (!keep[s]) continue;
+    out.mesh.simplices.push_back(mesh.simplices[s]);
+    for (Index v : mesh.simplices[s]) renumbered[std::size_t(v)] = 0;
+  }
+  for (std::size_t v = 0; v < renumbered.size(); ++v) {
+    if (renumbered[v] < 0) continue;
     renumbered[v] = Index(out.vertex.size());
     out.vertex.push_back(Index(v));
     out.mesh.vertices.push_back(mesh.vertices[v]);
@@ -29,6 +25,20 @@ TileCore<D> tile_core(const SimplexMesh<D>& mesh, const Vec<D>& lo, const Vec<D>
   return out;
 }
 
+template <int D>
+TileCore<D> tile_core(const SimplexMesh<D>& mesh, const Vec<D>& lo, const Vec<D>& hi) {
+  std::vector<char> keep(mesh.simplices.size(), 0);
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    Vec<D> c = Vec<D>::Zero();
+    for (Index v : mesh.simplices[i]) c += mesh.vertices[std::size_t(v)];
+    c /= double(D + 1);
+    keep[i] = ((c - lo).array() >= 0.0).all() && ((hi - c).array() > 0.0).all();
+  }
+  return select_simplices(mesh, keep);
+}
+
+template TileCore<2> select_simplices<2>(const SimplexMesh<2>&, const std::vector<char>&);
+template TileCore<3> select_simplices<3>(const SimplexMesh<3>&, const std::vector<char>&);
 template TileCore<2> tile_core<2>(const SimplexMesh<2>&, const Vec<2>&, const Vec<2>&);
 template TileCore<3> tile_core<3>(const SimplexMesh<3>&, const Vec<3>&, const Vec<3>&);
 

@@ -18,6 +18,11 @@ struct TileCore {
   std::vector<Index> vertex;  ///< core vertex -> vertex of the tile's mesh
 };
 
+/// @brief The simplices of `mesh` flagged in `keep` (#simplices), in their order, over the
+/// vertices they use in the mesh's order.
+template <int D>
+TileCore<D> select_simplices(const SimplexMesh<D>& mesh, const std::vector<char>& keep);
+
 /// @brief The simplices of `mesh` whose centroid x has lo <= x < hi, in their order, over
 /// their vertices in the mesh's order.
 template <int D>

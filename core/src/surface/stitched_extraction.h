@@ -12,6 +12,8 @@
 
 #include "lsrecon/core/level_set_extraction.h"
 
+#include <array>
+#include <unordered_map>
 #include <vector>
 
 namespace lsr {
@@ -23,12 +25,34 @@ struct TileField {
   std::vector<double> u;
 };
 
-/// @brief {u = 0} over the tiles, welded by the coordinates of its points' edge ends. A point is
-/// placed on its edge from the end that is lower in lexicographic order, so the same edge gives
-/// the same point in every tile (with other values at its ends, the first tile's point; with
-/// other signs, an edge crossed in one tile only: a hole). Vertices are numbered as the tiles
-/// first reach them, in order; facets follow the tiles. `sources` is left empty (the edges are
-/// the tiles').
+/// @brief {u = 0} over tiles added one at a time: the surface grows by each tile's piece,
+/// welded to the earlier pieces by the coordinates of its points' edge ends, so that only the
+/// surface and the welding map are held, not the tiles. A point is placed on its edge from the
+/// end that is lower in lexicographic order, so the same edge gives the same point in every tile
+/// (with other values at its ends, the first tile's point; with other signs, an edge crossed in
+/// one tile only: a hole). Vertices are numbered as the tiles first reach them, in order; facets
+/// follow the tiles. `sources` stays empty (the edges are the tiles').
+template <int D>
+class StitchedSurface {
+ public:
+  explicit StitchedSurface(double edge_margin = 1e-9, int threads = 0);
+  /// @throw InvalidInput as extract_zero_level_set.
+  void add(const TileField<D>& tile);
+  const LevelSetMesh<D>& surface() const { return out_; }
+  LevelSetMesh<D> take() { return std::move(out_); }
+
+ private:
+  using EdgeKey = std::array<double, 2 * D>;
+  struct EdgeKeyHash {
+    std::size_t operator()(const EdgeKey& k) const;
+  };
+  double edge_margin_;
+  int threads_;
+  LevelSetMesh<D> out_;
+  std::unordered_map<EdgeKey, Index, EdgeKeyHash> welded_;
+};
+
+/// @brief {u = 0} over the tiles (StitchedSurface, every tile in order).
 /// @throw InvalidInput as extract_zero_level_set, for any tile.
 template <int D>
 LevelSetMesh<D> stitched_zero_level_set(const std::vector<TileField<D>>& tiles, double edge_margin = 1e-9, int threads = 0);

@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file tiled_solve.cpp
+#include "tiles/tiled_solve.h"
+
+#include "evolution/front_on_mesh.h"
+#include "mesh/data_mesh.h"
+#include "mesh/tile_core.h"
+#include "sampling/local_sampling.h"
+#include "start/outside_flood_fill.h"
+#include "surface/closed_surface.h"
+#include "surface/stitched_extraction.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+namespace lsr::detail {
+namespace {
+
+// Beyond its region a tile's mesh follows the data at this size, which is what carries the
+// inside/outside decision of the whole box to its own flood: the coarsest finest size halved
+// (1/64 in 3D), so that a gap of 4 of its cells (where the flood passes) is 1/16 of the box.
+template <int D>
+constexpr double kCoarseSize = automatic_defaults(D).coarsest_finest_size / 2.0;
+
+template <int D>
+bool in_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
+  return ((x - lo).array() >= 0.0).all() && ((hi - x).array() > 0.0).all();
+}
+
+template <int D>
+bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
+  return ((x - lo).array() >= 0.0).all() && ((hi - x).array() >= 0.0).all();
+}
+
+// Seam vertices by their coordinates (the tiles' meshes share them bit for bit).
+template <int D>
+struct CoordinateHash {
+  std::size_t operator()(const std::array<double, D>& k) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (double x : k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+    return std::size_t(h ^ (h >> 32));
+  }
+};
+
+template <int D>
+std::array<double, D> key_of(const Vec<D>& x) {
+  std::array<double, D> k;
+  std::copy_n(x.data(), D, k.begin());
+  return k;
+}
+
+template <int D>
+TileField<D> field_on(const TileCore<D>& part, const Eigen::VectorXd& u) {
+  TileField<D> f{part.mesh, std::vector<double>(part.vertex.size())};
+  for (std::size_t i = 0; i < part.vertex.size(); ++i) f.u[i] = u[part.vertex[i]];
+  return f;
+}
+
+template <int D>
+void add_tile_result(ReconstructionResult<D>& r, const ReconstructionResult<D>& t, bool first) {
+  auto worse = [](ReconstructionStatus a, ReconstructionStatus b) { return int(a) > int(b) ? a : b; };
+  r.status = first ? t.status : worse(r.status, t.status);
+  r.stalled = r.stalled || t.stalled;
+  r.iterations = std::max(r.iterations, t.iterations);
+  r.best_iteration = std::max(r.best_iteration, t.best_iteration);
+  r.residual = std::max(r.residual, t.residual);
+  r.tolerance = std::max(r.tolerance, t.tolerance);
+  r.unreached_points = std::max(r.unreached_points, t.unreached_points);
+  r.mesh_vertices = std::max(r.mesh_vertices, t.mesh_vertices);
+  r.mesh_simplices = std::max(r.mesh_simplices, t.mesh_simplices);
+  r.h_min = first ? t.h_min : std::min(r.h_min, t.h_min);
+  r.tagged_start = t.tagged_start;
+  r.sealed_cavities = std::max(r.sealed_cavities, t.sealed_cavities);
+  r.open_side_points = std::max(r.open_side_points, t.open_side_points);
+  r.time_step = t.time_step, r.alpha = t.alpha, r.curvature_weight = t.curvature_weight;
+  r.solver_iterations += t.solver_iterations;
+}
+
+}  // namespace
+
+template <int D>
+TileBox<D> tile_box(int t, int k, double margin) {
+  TileBox<D> b;
+  for (int a = 0; a < D; ++a, t /= k) {
+    const int i = t % k;
+    b.lo[a] = double(i) / k;
+    b.hi[a] = i + 1 == k ? 2.0 : double(i + 1) / k;
+    b.region_lo[a] = std::max(0.0, b.lo[a] - margin);
+    b.region_hi[a] = std::min(1.0, b.hi[a] + margin);
+  }
+  return b;
+}
+
+template <int D>
+TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+                             const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
+  const int k = o.limits.solve_tiles;
+  int tiles = 1;
+  for (int a = 0; a < D; ++a) tiles *= k;
+  const Points<D>& points = sampled.data.points();
+  // The background cells shrink with the tiles, and a tile's mesh equals the whole mesh in its
+  // core once its region reaches two of them past it (mesh/tile_core.h).
+  ReconstructionOptions to = o;
+  to.mesh.h_max = std::min(o.mesh.h_max, 1.0 / (8.0 * k));
+  const double margin = 2.0 * to.mesh.h_max;
+
+  TiledFront<D> out;
+  out.normals.assign(points.size(), Vec<D>::Zero());
+  // The values of the seam vertices each tile owns; the core simplices near each tile's front
+  // (those that read another tile's values: its seam layer), extracted once every tile is
+  // solved, at the level through the data if asked (one level for all, or the seams would
+  // open); u at the data points, each from its owner.
+  std::unordered_map<std::array<double, D>, double, CoordinateHash<D>> seam_value;
+  std::vector<std::pair<int, TileField<D>>> near_front;
+  std::vector<double> on_data;
+  on_data.reserve(points.size());
+  for (int t = 0; t < tiles; ++t) {
+    const TileBox<D> box = tile_box<D>(t, k, margin);
+    const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(tiles) + " ";
+    const Progress tile_progress([&](const std::string& stage, double fraction) {
+      progress.update(name + stage, fraction);
+      return true;
+    });
+    std::vector<double> scale = sampled.point_scale;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!in_closed_box<D>(points[i], box.region_lo, box.region_hi)) scale[i] = std::max(scale[i], kCoarseSize<D>);
+    }
+    ReconstructionResult<D> tr;
+    AdaptiveMesh<D> adaptive = data_mesh(sampled.data, scale, to, max_vertices, tile_progress, tr.h_min);
+    tr.mesh_vertices = Index(adaptive.mesh.vertices.size());
+    tr.mesh_simplices = Index(adaptive.mesh.simplices.size());
+    clock.end("mesh");
+    FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock);
+    add_tile_result(r, tr, t == 0);
+    if (tr.status == ReconstructionStatus::cancelled) return TiledFront<D>();
+    const SimplexMesh<D>& mesh = adaptive.mesh;
+    const Eigen::VectorXd& u = front.best;
+
+    // The data points it owns take their normals and values from its front.
+    const Points<D> normals = oriented_normals(sampled.sampling, front.at, front.ops.gradient_times(u));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (!in_box<D>(points[i], box.lo, box.hi)) continue;
+      out.normals[i] = normals[i];
+      double value = 0.0;
+      for (int j = 0; j <= D; ++j) value += front.at[i].weights[j] * u[front.at[i].vertices[j]];
+      on_data.push_back(value);
+    }
+    // Its owned vertices that simplices of other cores use are seam vertices.
+    // Its core simplices that a level within the band may cross (u is a distance there).
+    std::vector<char> kept(mesh.simplices.size(), 0);
+    for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
+      Vec<D> c = Vec<D>::Zero();
+      double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+      for (Index v : mesh.simplices[s]) {
+        c += mesh.vertices[std::size_t(v)];
+        lowest = std::min(lowest, u[v]), highest = std::max(highest, u[v]);
+      }
+      c /= double(D + 1);
+      if (in_box<D>(c, box.lo, box.hi)) {
+        kept[s] = lowest <= front.band && highest >= -front.band;
+        continue;
+      }
+      for (Index v : mesh.simplices[s]) {
+        const Vec<D>& x = mesh.vertices[std::size_t(v)];
+        if (in_box<D>(x, box.lo, box.hi)) seam_value[key_of<D>(x)] = u[v];
+      }
+    }
+    near_front.emplace_back(t, field_on<D>(select_simplices<D>(mesh, kept), u));
+  }
+  progress.update("extract", -1.0);
+  out.level = o.output.level_through_data && !on_data.empty() ? median(on_data) : 0.0;
+  StitchedSurface<D> stitched(kOutputEdgeMargin, o.limits.threads);
+  for (auto& [t, field] : near_front) {
+    const TileBox<D> box = tile_box<D>(t, k, margin);
+    for (std::size_t i = 0; i < field.u.size(); ++i) {
+      const Vec<D>& x = field.core.vertices[i];
+      if (!in_box<D>(x, box.lo, box.hi)) {
+        const auto it = seam_value.find(key_of<D>(x));
+        if (it == seam_value.end()) {
+          ++out.seam_mismatches;
+        } else {
+          field.u[i] = it->second;
+        }
+      }
+      field.u[i] -= out.level;
+      if (on_wall<D>(x)) field.u[i] = std::max(field.u[i], std::numeric_limits<double>::min());
+    }
+    stitched.add(field);
+    field = TileField<D>();
+  }
+  clock.end("extract");
+  out.surface = stitched.take();
+  return out;
+}
+
+template TileBox<2> tile_box<2>(int, int, double);
+template TileBox<3> tile_box<3>(int, int, double);
+template TiledFront<2> solve_in_tiles<2>(const SampledData<2>&, const ReconstructionOptions&, double, Index,
+                                         const SignedDistance<2>*, ReconstructionResult<2>&,
+                                         const Progress&, StageClock&);
+template TiledFront<3> solve_in_tiles<3>(const SampledData<3>&, const ReconstructionOptions&, double, Index,
+                                         const SignedDistance<3>*, ReconstructionResult<3>&,
+                                         const Progress&, StageClock&);
+
+}  // namespace lsr::detail
