@@ -15,6 +15,18 @@
 
 namespace lsr::detail {
 
+namespace {
+
+std::vector<double> tested_only(const std::vector<double>& values, const std::vector<char>& tested) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (tested[i]) out.push_back(values[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
 template <int D>
 FrontEvolution<D>::FrontEvolution(const FrontProblem<D>& problem, const ReconstructionOptions& options,
                                   const FrontSchedule& schedule, StepParameters step)
@@ -36,8 +48,19 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
   double progress_fraction = 0.0;
   best_ = u;
   bool best_front_ok = false;
-  const double cloud_points =
+  double cloud_points =
       p_.represented.empty() ? double(p_.at.size()) : double(std::accumulate(p_.represented.begin(), p_.represented.end(), Index(0)));
+  // A tile's test reads its own points and front only.
+  const bool all_tested = p_.tested_points.empty();
+  std::vector<char> front_ignored;
+  if (!all_tested) {
+    cloud_points = 0.0;
+    for (std::size_t i = 0; i < p_.at.size(); ++i) {
+      if (p_.tested_points[i]) cloud_points += p_.represented.empty() ? 1.0 : double(p_.represented[i]);
+    }
+    front_ignored.assign(nv, 0);
+    for (std::size_t v = 0; v < nv; ++v) front_ignored[v] = !p_.tested_vertices[v] || (!p_.near_hole.empty() && p_.near_hole[v]);
+  }
   try {
     // Its vectors are kept from step to step, released before each renormalisation (the
     // loop's peak) and freed before the fit.
@@ -67,11 +90,14 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         // of 80 holey draws "not converged" (measured).
         stepper.release();  // the renormalisation is the loop's memory peak
         const RenormalizationReport<D> renormalized = renormalize(p_.mesh, p_.neighbours, u, schedule_.band, o.limits.threads);
-        front_distance = max_front_distance(renormalized.front, d, p_.front_tolerance, p_.near_hole);
+        front_distance = max_front_distance(renormalized.front, d, p_.front_tolerance, all_tested ? p_.near_hole : front_ignored);
         front_area = front_measure(renormalized.front);
         clock.end("renormalize");
       }
-      const std::vector<double> per_point = data_residuals(p_.at, u, p_.eps);
+      std::vector<double> per_point = data_residuals(p_.at, u, p_.eps);
+      if (!all_tested) {
+        for (std::size_t i = 0; i < per_point.size(); ++i) per_point[i] = p_.tested_points[i] ? per_point[i] : 0.0;
+      }
       const double data_residual = *std::max_element(per_point.begin(), per_point.end());
       // Converged when every data point is within its eps of the front and the front within
       // its tolerance of the data; the residual is the worse of the two, in tolerances.
@@ -105,7 +131,7 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         break;
       }
       r.stalled = stall.stalled(best_residual_, r.best_iteration == n, displacement,
-                                bulk_residual(per_point, schedule_.stall.bulk_share));
+                                bulk_residual(all_tested ? per_point : tested_only(per_point, p_.tested_points), schedule_.stall.bulk_share));
       if (r.stalled) {
         // Stalled: the front no longer gets closer to the last points. Curvature holds it short
         // of the tip of a sharp concave crease, pinned cells short of a slit between close

@@ -39,6 +39,10 @@ struct FrontProblem {
   /// #N: the points of the cloud each data point stands for (mesh_resolution_data.h), which the
   /// unreached count adds up; empty: one each
   const std::vector<Index>& represented;
+  /// #N and #V: the points and the front the stopping test reads (a tile's own, tiled_solve.h);
+  /// empty: all
+  const std::vector<char>& tested_points;
+  const std::vector<char>& tested_vertices;
 };
 
 /// @brief How often to renormalise, where, and what the stall rule is: the loop's schedule.

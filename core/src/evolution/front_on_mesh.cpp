@@ -14,7 +14,8 @@ namespace lsr::detail {
 template <int D>
 FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<double>& point_scale, AdaptiveMesh<D>& adaptive,
                              const ReconstructionOptions& o, double hole_radius, const SignedDistance<D>* custom_start,
-                             ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
+                             ReconstructionResult<D>& r, const Progress& progress, StageClock& clock,
+                             const std::array<Vec<D>, 2>* tested) {
   const NearestPointIndex<D>& data = sampled.data;
   const LocalSampling<D>& sampling = sampled.sampling;
   const UnitBoxTransform<D>& box = sampled.box;
@@ -67,8 +68,18 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
   // 8. The time loop: the front evolves to the data; the best iterate is kept.
-  const FrontProblem<D> problem{mesh,  f.neighbours,       f.ops, f.at, cells, settings.eps, settings.reach,
-                                settings.front_tolerance, scale, dist, away,  near_hole,    sampled.left_out.represented};
+  std::vector<char> tested_points, tested_vertices;
+  if (tested) {
+    const auto inside = [&](const Vec<D>& x) {
+      return ((x - (*tested)[0]).array() >= 0.0).all() && (((*tested)[1] - x).array() >= 0.0).all();
+    };
+    for (const Vec<D>& x : data.points()) tested_points.push_back(inside(x));
+    for (const Vec<D>& x : mesh.vertices) tested_vertices.push_back(inside(x));
+  }
+  const FrontProblem<D> problem{mesh,         f.neighbours,         f.ops, f.at,          cells,
+                                settings.eps, settings.reach,       settings.front_tolerance,
+                                scale,        dist,                 away,  near_hole,     sampled.left_out.represented,
+                                tested_points, tested_vertices};
   FrontEvolution<D> evolution(problem, o, settings.schedule, settings.step);
   evolution.run(start.u, attract.d, r, progress, clock, settings.median_eps, box.scale());
   r.residual = evolution.best_residual() * settings.median_eps / box.scale();
@@ -79,8 +90,10 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
 }
 
 template FrontOnMesh<2> front_on_mesh<2>(const SampledData<2>&, const std::vector<double>&, AdaptiveMesh<2>&, const ReconstructionOptions&,
-                                         double, const SignedDistance<2>*, ReconstructionResult<2>&, const Progress&, StageClock&);
+                                         double, const SignedDistance<2>*, ReconstructionResult<2>&, const Progress&, StageClock&,
+                                         const std::array<Vec<2>, 2>*);
 template FrontOnMesh<3> front_on_mesh<3>(const SampledData<3>&, const std::vector<double>&, AdaptiveMesh<3>&, const ReconstructionOptions&,
-                                         double, const SignedDistance<3>*, ReconstructionResult<3>&, const Progress&, StageClock&);
+                                         double, const SignedDistance<3>*, ReconstructionResult<3>&, const Progress&, StageClock&,
+                                         const std::array<Vec<3>, 2>*);
 
 }  // namespace lsr::detail

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <vector>
 
 namespace lsr::detail {
@@ -37,10 +38,12 @@ struct FrontOnMesh {
 /// @brief Evolves the front from u0 (the caller's `custom_start`, or options.start's) on
 /// `adaptive`'s mesh, whose forest locates the data and is then released (an anisotropic mesh
 /// has none: the mesh alone locates). `point_scale` is the data's, raised to the mesh's sizes.
-/// Fills the settings' and the loop's fields of `r`.
+/// Fills the settings' and the loop's fields of `r`. With `tested` (a tile's core box, lo and
+/// hi), the stopping test reads the data points in it and the front over its vertices only.
 template <int D>
 FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<double>& point_scale, AdaptiveMesh<D>& adaptive,
                              const ReconstructionOptions& o, double hole_radius, const SignedDistance<D>* custom_start,
-                             ReconstructionResult<D>& r, const Progress& progress, StageClock& clock);
+                             ReconstructionResult<D>& r, const Progress& progress, StageClock& clock,
+                             const std::array<Vec<D>, 2>* tested = nullptr);
 
 }  // namespace lsr::detail

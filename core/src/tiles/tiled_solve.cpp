@@ -139,7 +139,15 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
     tr.mesh_vertices = Index(adaptive.mesh.vertices.size());
     tr.mesh_simplices = Index(adaptive.mesh.simplices.size());
     clock.end("mesh");
-    FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock);
+    // Its stopping test reads its core and half its margin: not the coarse part, whose front is
+    // other tiles' to place, nor the fine front next to it, which the coarse one holds back
+    // (measured: tested in the whole region, the 2D star's tiles did not converge); not its
+    // core alone either: the front it keeps must have settled where its neighbours' fronts meet
+    // it (measured: tested in their cores, the tiles round the neck of two close spheres kept
+    // steps with and without the neck, and welded a handle).
+    const TileBox<D> tested = tile_box<D>(t, k, margin / 2.0);
+    const std::array<Vec<D>, 2> region{tested.region_lo, tested.region_hi};
+    FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock, &region);
     add_tile_result(r, tr, t == 0);
     if (tr.status == ReconstructionStatus::cancelled) return TiledFront<D>();
     const SimplexMesh<D>& mesh = adaptive.mesh;

@@ -35,6 +35,7 @@ struct Loop {
   Points<2> away;
   std::vector<char> near_hole;
   std::vector<Index> represented;  // one point each
+  std::vector<char> tested_points, tested_vertices;  // every point and vertex
   Eigen::VectorXd u0;
 
   Loop() {
@@ -62,7 +63,7 @@ struct Loop {
   }
   FrontProblem<2> problem() const {
     return {adaptive.mesh, neighbours, ops,  at,   cells,     settings.eps, settings.reach, settings.front_tolerance,
-            scale,         dist,       away, near_hole, represented};
+            scale,         dist,       away, near_hole, represented, tested_points, tested_vertices};
   }
 };
 
