@@ -54,9 +54,32 @@ void expect_tiles_as_one_mesh(const std::string& shape_name, int points) {
 
 TEST(TiledReconstruction, ATorusInEightTilesIsOneMeshsTorus) { expect_tiles_as_one_mesh("torus", 20000); }
 
+// Cut planes off the mesh's dyadic planes, 27 tiles: still closed and of genus 1.
+TEST(TiledReconstruction, ATorusInTwentySevenTilesIsClosed) {
+  const TestShape shape = make_test_shape("torus");
+  ReconstructionOptions o;
+  o.limits.solve_tiles = 3;
+  expect_same_topology(reconstruct<3>(sample_test_shape(shape, 5000).points, o), shape.genus);
+}
+
 // 4% of the diagonal apart: at the front's own level the two spheres stay joined; the level
 // through the data, one for every tile, parts them as one mesh does.
 TEST(TiledReconstruction, TwoCloseSpheresInEightTilesAreTwoComponents) { expect_tiles_as_one_mesh("two-spheres", 20000); }
+
+// A curve sampled finer than the 2D mesh (as the demos are) in 2 x 2 tiles: one closed curve,
+// converged (each tile's test reads its own part), within the one-mesh bound of 2 h_min of
+// the circle (level_set_reconstruction_test.cpp, the star).
+TEST(TiledReconstruction, ACircleInFourTilesIsOneCurveWithinTwoHmin) {
+  const Circle circle{Vec<2>(0.3, -0.2), 1.0};
+  ReconstructionOptions o;
+  o.limits.solve_tiles = 2;
+  const auto r = reconstruct<2>(circle.sample(20000), o);
+  EXPECT_EQ(r.status, ReconstructionStatus::converged);
+  ASSERT_EQ(r.loops.size(), 1u);
+  double worst = 0.0;
+  for (const auto& v : r.surface.vertices) worst = std::max(worst, std::abs(circle.signed_distance(v)));
+  EXPECT_LE(worst, 2 * r.tolerance);
+}
 
 TEST(TiledReconstruction, TilesWithoutAVolumeMeshOrAnAnisotropicMeshAreRefused) {
   const Points<3> points = Sphere{Vec<3>(0, 0, 0), 1.0}.sample(500);

@@ -11,6 +11,7 @@
 #include "surface/stitched_extraction.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -63,6 +64,40 @@ TileField<D> field_on(const TileCore<D>& part, const Eigen::VectorXd& u) {
   TileField<D> f{part.mesh, std::vector<double>(part.vertex.size())};
   for (std::size_t i = 0; i < part.vertex.size(); ++i) f.u[i] = u[part.vertex[i]];
   return f;
+}
+
+// The level through the data lies within this many median scales of 0 (the stopping test's
+// tolerance is one scale at every point), or the front is extracted at 0.
+constexpr double kLevelWindow = 4.0;
+
+template <int D>
+using SeamValues = std::unordered_map<std::array<double, D>, double, CoordinateHash<D>>;
+
+// The tile's core simplices that a level within `window` of 0 may cross (u is a distance
+// there), and into `seam`, the values of its own vertices that simplices outside its core use
+// (the other tiles' seam layers).
+template <int D>
+TileField<D> core_shell(const SimplexMesh<D>& mesh, const Eigen::VectorXd& u, const TileBox<D>& box, double window,
+                        SeamValues<D>& seam) {
+  std::vector<char> kept(mesh.simplices.size(), 0);
+  for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
+    Vec<D> c = Vec<D>::Zero();
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+    for (Index v : mesh.simplices[s]) {
+      c += mesh.vertices[std::size_t(v)];
+      lowest = std::min(lowest, u[v]), highest = std::max(highest, u[v]);
+    }
+    c /= double(D + 1);
+    if (in_box<D>(c, box.lo, box.hi)) {
+      kept[s] = lowest <= window && highest >= -window;
+      continue;
+    }
+    for (Index v : mesh.simplices[s]) {
+      const Vec<D>& x = mesh.vertices[std::size_t(v)];
+      if (in_box<D>(x, box.lo, box.hi)) seam[key_of<D>(x)] = u[v];
+    }
+  }
+  return field_on<D>(select_simplices<D>(mesh, kept), u);
 }
 
 template <int D>
@@ -119,10 +154,11 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
   // (those that read another tile's values: its seam layer), extracted once every tile is
   // solved, at the level through the data if asked (one level for all, or the seams would
   // open); u at the data points, each from its owner.
-  std::unordered_map<std::array<double, D>, double, CoordinateHash<D>> seam_value;
+  SeamValues<D> seam_value;
   std::vector<std::pair<int, TileField<D>>> near_front;
   std::vector<double> on_data;
   on_data.reserve(points.size());
+  const double window = kLevelWindow * median(sampled.point_scale);
   for (int t = 0; t < tiles; ++t) {
     const TileBox<D> box = tile_box<D>(t, k, margin);
     const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(tiles) + " ";
@@ -162,30 +198,11 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
       for (int j = 0; j <= D; ++j) value += front.at[i].weights[j] * u[front.at[i].vertices[j]];
       on_data.push_back(value);
     }
-    // Its owned vertices that simplices of other cores use are seam vertices.
-    // Its core simplices that a level within the band may cross (u is a distance there).
-    std::vector<char> kept(mesh.simplices.size(), 0);
-    for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
-      Vec<D> c = Vec<D>::Zero();
-      double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
-      for (Index v : mesh.simplices[s]) {
-        c += mesh.vertices[std::size_t(v)];
-        lowest = std::min(lowest, u[v]), highest = std::max(highest, u[v]);
-      }
-      c /= double(D + 1);
-      if (in_box<D>(c, box.lo, box.hi)) {
-        kept[s] = lowest <= front.band && highest >= -front.band;
-        continue;
-      }
-      for (Index v : mesh.simplices[s]) {
-        const Vec<D>& x = mesh.vertices[std::size_t(v)];
-        if (in_box<D>(x, box.lo, box.hi)) seam_value[key_of<D>(x)] = u[v];
-      }
-    }
-    near_front.emplace_back(t, field_on<D>(select_simplices<D>(mesh, kept), u));
+    near_front.emplace_back(t, core_shell<D>(mesh, u, box, window, seam_value));
   }
   progress.update("extract", -1.0);
   out.level = o.output.level_through_data && !on_data.empty() ? median(on_data) : 0.0;
+  if (std::abs(out.level) >= window) out.level = 0.0;  // a front far from its data: its own level
   StitchedSurface<D> stitched(kOutputEdgeMargin, o.limits.threads);
   for (auto& [t, field] : near_front) {
     const TileBox<D> box = tile_box<D>(t, k, margin);

@@ -215,12 +215,13 @@ struct LimitOptions {
   /// point's 32 nearest are held one tile at a time (4 bytes x 32 a point otherwise). 0: one
   /// tile per worker. The result does not depend on it.
   int tiles = 0;
-  /// Solve the front in tiles (3D): the unit box cut into solve_tiles^3 boxes, each meshed
-  /// finely in its box and a margin, coarsely beyond, solved alone and welded at the seams
-  /// into one closed surface; one tile's mesh is held at a time. 1: one mesh. The surface is the
-  /// front's, projected onto the fit through the data (OutputOptions::fit_surface); the fit's
-  /// corrections of the front's topology and the removal of unsupported parts are the whole
-  /// mesh's only, and so is the volume mesh. docs/how-it-works.md, "Tiles and MPI".
+  /// Experimental: solve the front in tiles, the unit box cut into solve_tiles^D boxes, each
+  /// meshed finely in its box and a margin, coarsely beyond, solved alone and welded at the
+  /// seams into one closed surface; one tile's mesh is held at a time. 1: one mesh. The
+  /// surface is the front's, projected onto the fit through the data (OutputOptions::
+  /// fit_surface); the fit's corrections of the front's topology and the removal of unsupported
+  /// parts are one mesh's only (measured: the same topology as one mesh on random samples, not
+  /// on half the scans), and so is the volume mesh. docs/how-it-works.md, "Tiles and MPI".
   int solve_tiles = 1;
   /// The workers that share the sampling (tile_exchange.h; lsrecon-mpi: MPI ranks), each
   /// passing reconstruct() its share of the cloud (3D); null: this process alone. The result

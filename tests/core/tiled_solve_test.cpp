@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/// @file tiled_solve_test.cpp
+/// @brief The tiles of the solve (tiles/tiled_solve.h): their cores partition the box, and every
+/// seam vertex a tile's kept simplices read from a neighbour was given by its owner, which
+/// holds only where the tiles' meshes agree vertex for vertex across the seams.
+#include "tiles/tiled_solve.h"
+
+#include "lsrecon/testdata/analytic_shapes.h"
+#include "sampling/sampled_data.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+namespace lsr::detail {
+namespace {
+
+TEST(TiledSolve, CoresPartitionTheBoxAndLieInTheirRegions) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k : {2, 3}) {
+    for (int n = 0; n < 2000; ++n) {
+      const Vec<3> x(unit(random), unit(random), unit(random));
+      int owners = 0;
+      for (int t = 0; t < k * k * k; ++t) {
+        const TileBox<3> b = tile_box<3>(t, k, 0.1);
+        const bool in_core = ((x - b.lo).array() >= 0.0).all() && ((b.hi - x).array() > 0.0).all();
+        owners += in_core;
+        if (in_core) {
+          EXPECT_TRUE(((x - b.region_lo).array() >= 0.0).all() && ((b.region_hi - x).array() >= 0.0).all());
+        }
+      }
+      EXPECT_EQ(owners, 1);
+    }
+  }
+}
+
+// 3 x 3 tiles of a circle: cut planes off the mesh's dyadic lines (3D, through the
+// reconstruction: tiled_reconstruction_test.cpp).
+TEST(TiledSolve, EverySeamVertexIsGivenByItsOwnerAndTheCircleIsClosed) {
+  const Points<2> points = Circle{Vec<2>(0, 0), 1.0}.sample(3000);
+  ReconstructionOptions o;
+  o.limits.solve_tiles = 3;
+  ReconstructionResult<2> r;
+  StageClock clock(r.seconds, r.stages);
+  const SampledData<2> sampled = sampled_data<2>(points, o, HeightFieldsAt::none, Progress(), r, clock);
+  const TiledFront<2> f = solve_in_tiles<2>(sampled, o, 0.0, 20'000'000, nullptr, r, Progress(), clock);
+  EXPECT_EQ(f.seam_mismatches, 0);
+  // Closed: every point ends two segments, one as its first point and one as its second.
+  std::vector<int> first(f.surface.vertices.size(), 0), second(f.surface.vertices.size(), 0);
+  for (const auto& e : f.surface.facets) ++first[std::size_t(e[0])], ++second[std::size_t(e[1])];
+  for (std::size_t v = 0; v < first.size(); ++v) ASSERT_TRUE(first[v] == 1 && second[v] == 1) << "point " << v;
+  EXPECT_EQ(closed_loops(f.surface).size(), 1u);
+}
+
+}  // namespace
+}  // namespace lsr::detail
