@@ -86,12 +86,13 @@ void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, d
   if (r.status == ReconstructionStatus::cancelled) return;
   if (!sampled.in.kept.empty()) r.point_normals = sampled.in.input_normals(every_point_normals(sampled.left_out, tiled.normals), r.input_points);
   r.surface = std::move(tiled.surface);
-  if (!o.output.fit_surface) r.output_level = tiled.level / sampled.box.scale();
   if (o.output.fit_surface) {
     progress.update("fit", -1.0);
     const QuadricImplicit<D> fit = fit_quadrics(sampled.data, tiled.normals, sampled.point_scale, o.limits.threads, progress);
     r.normals = fit.project(r.surface.vertices, o.limits.threads);
     clock.end("fit");
+  } else {
+    r.output_level = tiled.level / sampled.box.scale();
   }
   // Without the fit, and where the fit's normal points into the facets: theirs.
   const bool from_facets = r.normals.empty();

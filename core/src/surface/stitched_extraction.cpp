@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
-#include <cstring>
 
 namespace lsr {
 namespace {
@@ -16,17 +14,6 @@ bool lexicographically_less(const Vec<D>& a, const Vec<D>& b) {
 }
 
 }  // namespace
-
-template <int D>
-std::size_t StitchedSurface<D>::EdgeKeyHash::operator()(const EdgeKey& k) const {
-  std::uint64_t h = 1469598103934665603ull;
-  for (double x : k) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &x, sizeof bits);
-    h = (h ^ bits) * 1099511628211ull;
-  }
-  return std::size_t(h ^ (h >> 32));
-}
 
 template <int D>
 StitchedSurface<D>::StitchedSurface(double edge_margin, int threads) : edge_margin_(edge_margin), threads_(threads) {}

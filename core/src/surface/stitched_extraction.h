@@ -10,6 +10,7 @@
 /// extraction, up to the numbering and the last bits of seam points' coordinates.
 #pragma once
 
+#include "geometry/coordinate_hash.h"
 #include "lsrecon/core/level_set_extraction.h"
 
 #include <array>
@@ -43,13 +44,10 @@ class StitchedSurface {
 
  private:
   using EdgeKey = std::array<double, 2 * D>;
-  struct EdgeKeyHash {
-    std::size_t operator()(const EdgeKey& k) const;
-  };
   double edge_margin_;
   int threads_;
   LevelSetMesh<D> out_;
-  std::unordered_map<EdgeKey, Index, EdgeKeyHash> welded_;
+  std::unordered_map<EdgeKey, Index, CoordinateHash<2 * D>> welded_;
 };
 
 /// @brief {u = 0} over the tiles (StitchedSurface, every tile in order).

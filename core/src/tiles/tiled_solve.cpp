@@ -3,6 +3,7 @@
 #include "tiles/tiled_solve.h"
 
 #include "evolution/front_on_mesh.h"
+#include "geometry/coordinate_hash.h"
 #include "mesh/data_mesh.h"
 #include "mesh/tile_core.h"
 #include "sampling/local_sampling.h"
@@ -11,10 +12,8 @@
 #include "surface/stitched_extraction.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
-#include <cstdint>
-#include <cstring>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <unordered_map>
@@ -24,7 +23,7 @@ namespace {
 
 // Beyond its region a tile's mesh follows the data at this size, which is what carries the
 // inside/outside decision of the whole box to its own flood: the coarsest finest size halved
-// (1/64 in 3D), so that a gap of 4 of its cells (where the flood passes) is 1/16 of the box.
+// (1/64 in 3D, the size measured; the flood passes gaps of 4 of its cells, 1/16 of the box).
 template <int D>
 constexpr double kCoarseSize = automatic_defaults(D).coarsest_finest_size / 2.0;
 
@@ -37,20 +36,6 @@ template <int D>
 bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
   return ((x - lo).array() >= 0.0).all() && ((hi - x).array() >= 0.0).all();
 }
-
-// Seam vertices by their coordinates (the tiles' meshes share them bit for bit).
-template <int D>
-struct CoordinateHash {
-  std::size_t operator()(const std::array<double, D>& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (double x : k) {
-      std::uint64_t bits = 0;
-      std::memcpy(&bits, &x, sizeof bits);
-      h = (h ^ bits) * 1099511628211ull;
-    }
-    return std::size_t(h ^ (h >> 32));
-  }
-};
 
 template <int D>
 std::array<double, D> key_of(const Vec<D>& x) {
@@ -70,8 +55,9 @@ TileField<D> field_on(const TileCore<D>& part, const Eigen::VectorXd& u) {
 // tolerance is one scale at every point), or the front is extracted at 0.
 constexpr double kLevelWindow = 4.0;
 
+// Seam vertices by their coordinates' bits: the tiles' meshes share them exactly.
 template <int D>
-using SeamValues = std::unordered_map<std::array<double, D>, double, CoordinateHash<D>>;
+using SeamValues = std::unordered_map<std::array<double, D>, double, CoordinateHash<std::size_t(D)>>;
 
 // The tile's core simplices that a level within `window` of 0 may cross (u is a distance
 // there), and into `seam`, the values of its own vertices that simplices outside its core use
