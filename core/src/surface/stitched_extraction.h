@@ -39,7 +39,6 @@ class StitchedSurface {
   explicit StitchedSurface(double edge_margin = 1e-9, int threads = 0);
   /// @throw InvalidInput as extract_zero_level_set.
   void add(const TileField<D>& tile);
-  const LevelSetMesh<D>& surface() const { return out_; }
   LevelSetMesh<D> take() { return std::move(out_); }
 
  private:
