@@ -75,7 +75,10 @@ TileField<D> core_shell(const SimplexMesh<D>& mesh, const Eigen::VectorXd& u, co
     }
     c /= double(D + 1);
     if (in_box<D>(c, box.lo, box.hi)) {
-      kept[s] = lowest <= window && highest >= -window;
+      // Its seam layer whatever its own values: the owners' may cross the level.
+      bool all_owned = true;
+      for (Index v : mesh.simplices[s]) all_owned = all_owned && in_box<D>(mesh.vertices[std::size_t(v)], box.lo, box.hi);
+      kept[s] = !all_owned || (lowest <= window && highest >= -window);
       continue;
     }
     for (Index v : mesh.simplices[s]) {
