@@ -5,9 +5,8 @@
 #include "surface/closed_surface.h"
 
 #include "fit/curve_refinement.h"
-#include "fit/merge_without_joins.h"
+#include "fit/fitted_field.h"
 #include "fit/rim_normals.h"
-#include "fit/sheet_gaps.h"
 #include "fit/surface_refinement.h"
 #include "mesh/data_metric.h"
 #include "sampling/residual_noise.h"
@@ -20,11 +19,6 @@
 namespace lsr::detail {
 
 namespace {
-
-// Past the largest empty disc among random samples (1.45 local scales, local_sampling.h) no
-// sample supports the surface: there the fit extrapolates and the front is held by curvature
-// alone (so attach_fit's merge may join there too).
-constexpr double kUnsupported = 1.5;
 
 // At the rim of the unsupported surface (its fixed vertices next to a free one) the fit's
 // normals lean towards the flattened part: from above, 10-15 degrees on average on the sphere's
@@ -65,7 +59,7 @@ void take_rim_normals_from_data(const LevelSetMesh<D>& s, const EdgeGraph& edges
 // 1.5 scales), while a vertex in a gap of a well sampled surface, with no vertex past 1.5
 // scales near, is left alone (all vertices past one scale: clean i.i.d. Hausdorff 1.63x).
 template <int D>
-std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const Eigen::VectorXd& scale, int threads) {
+std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const std::vector<double>& scale, int threads) {
   constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 0.5;
   LevelSetMesh<D>& s = r.surface;
   LargeVector<Index> nearest;
@@ -73,9 +67,8 @@ std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const Neare
   std::vector<char> free(s.vertices.size()), loose(s.vertices.size());
   Points<D> towards(s.vertices.size());  // to the nearest sample
   for (std::size_t i = 0; i < free.size(); ++i) {
-    const EdgePoint& e = s.sources[i];
     towards[i] = data.points()[std::size_t(nearest[i])] - s.vertices[i];
-    const double away = towards[i].norm() / ((1.0 - e.t) * scale[e.a] + e.t * scale[e.b]);
+    const double away = towards[i].norm() / scale[i];
     free[i] = away > kUnsupported;
     loose[i] = away > kLoose;
   }
@@ -99,140 +92,32 @@ std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const Neare
 }  // namespace
 
 template <int D>
+void project_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const std::vector<double>& share,
+                      const std::vector<double>& vertex_scale, const NearestPointIndex<D>& data, int threads) {
+  const Points<D> extracted = share.empty() ? Points<D>() : r.surface.vertices;
+  r.normals = fit.project(r.surface.vertices, threads);
+  for (std::size_t i = 0; i < extracted.size(); ++i) {
+    if (share[i] < 1.0) r.surface.vertices[i] = extracted[i] + share[i] * (r.surface.vertices[i] - extracted[i]);
+  }
+  set_facet_normals(r.surface, fair_unsupported_parts(r, data, vertex_scale, threads), r.normals);
+}
+
+template <int D>
 void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
                 bool volume, int threads) {
-  // kHandover: where unsupported solid starts going to the front (below).
-  constexpr double band_factor = 3.0, kHandover = 1.0;
-  const auto is_over_hole = [&](std::size_t v) { return !over_hole.empty() && over_hole[v]; };
-  std::vector<double> values(u.data(), u.data() + u.size());
-  Points<D> band;
-  std::vector<Index> band_vertices;
-  for (Eigen::Index v = 0; v < u.size(); ++v) {
-    if (std::abs(u[v]) < band_factor * scale[v]) {
-      band.push_back(mesh.vertices[v]);
-      band_vertices.push_back(Index(v));
-    }
-  }
-  std::vector<double> f;
-  fit.evaluate(band, f, nullptr, threads);
-  // Near a sealed opening, the share of F in values: the output is projected onto F only that
-  // far (below), as F extrapolates where the front took over (measured: projected in full, the
-  // front's cap over a tube's open end turned facets inside out). Elsewhere in full (measured:
-  // limited everywhere, the clean sphere's Hausdorff distance x3.9).
-  std::vector<double> fit_share;
-  if (!near_opening.empty()) {
-    fit_share.resize(values.size());
-    for (std::size_t v = 0; v < values.size(); ++v) fit_share[v] = near_opening[v] ? 0.0 : 1.0;
-  }
-  auto limit_share = [&](Index v, double share) {
-    if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] *= share;
-  };
-  // The settled front lies within gap_factor spacings of the data: a fit that disagrees with its
-  // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
-  // But in a gap between two facing sheets (sheet_gaps.h) the pinned cells of both sides hold a
-  // bridge of front as deep as half the gap, which the fit cuts at any depth (measured: a bridge
-  // 2.09 spacings deep kept the noisy, holey two spheres of seed 3 in one piece).
-  std::vector<std::size_t> disputed;  // band slots where the fit says outside, inside the front
-  Points<D> queries;
-  std::vector<double> query_distance, query_scale;
-  for (std::size_t k = 0; k < band.size(); ++k) {
-    const Index v = band_vertices[k];
-    if (!(u[v] < 0.0 && f[k] >= 0.0)) continue;
-    disputed.push_back(k);
-    queries.push_back(band[k]);
-    query_distance.push_back(distance[v]);
-    query_scale.push_back(scale[v]);
-  }
-  const std::vector<char> in_gap = between_facing_sheets(data, normals, queries, query_distance, query_scale, threads);
-  std::vector<char> cuts_bridge(band.size(), 0);
-  for (std::size_t i = 0; i < disputed.size(); ++i) cuts_bridge[disputed[i]] = in_gap[i];
-  for (std::size_t k = 0; k < band.size(); ++k) {
-    const Index v = band_vertices[k];
-    const bool trusted = (f[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] || cuts_bridge[k];
-    values[v] = trusted ? f[k] : u[v];
-    if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] = trusted ? 1.0 : 0.0;
-    auto hand_over = [&](double start) {
-      const double w = std::clamp((distance[v] - start * scale[v]) / scale[v], 0.0, 1.0);
-      values[v] = (1.0 - w) * values[v] + w * u[v];
-      limit_share(v, 1.0 - w);
-    };
-    // Over a spanned hole nothing pins the front, and on a mesh the vertices next to the discs
-    // keep a distance up to half an edge, through which a long run lets it creep into the solid
-    // (measured: 0.13 into a sphere by step 26 of the holey two spheres, with a small handle in
-    // its zero set, on 5 of 80 draws of the holey clouds). Where the fit adds solid there and
-    // the front near v (u away) lies beyond the data's gap, the fit's solid stays. Not where
-    // the front is at the data: a knife edge's rim discs run on past its tip, and so do the
-    // fit's tangent planes (measured: without that test, fins 2.8 spacings past the 5k bunny's
-    // ear tips).
-    const bool adds_solid = values[v] < 0.0 && u[v] > 0.0;
-    const bool hole = is_over_hole(std::size_t(v));
-    if (hole && adds_solid && distance[v] - u[v] > trust_factor * scale[v]) continue;
-    // Solid the fit adds outside the front must be near the data: the surface between random
-    // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
-    // and farther than one spacing from every sample on exp(-6) = 0.25% of its area. Where the
-    // fit's surface passes farther from the data (nearer to v than half v's distance to the
-    // data), it extrapolates: the tangent planes of a knife edge's sides run on past its tip
-    // (measured on the bunny's ear). From 1 to 2 spacings the front takes over (measured: from
-    // 1.5 to 2.5, the noisy bunny kept fins on its ear tips, Hausdorff distance up to 1.9e-2 of
-    // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the
-    // data is left to the fit (there |F| is v's distance to the data: measured, the noisy two
-    // spheres got a void). Near a sealed opening (a tube's open end, where the front closes
-    // what the fits continue) the fit's distance is not asked: on the tube's axis past its end
-    // the fits' surface lies a tube radius away, nearer than half the distance to the rim
-    // (measured: a notched end, the tube's wall run on past the front's cap).
-    if (adds_solid && (-values[v] < 0.5 * distance[v] || (!near_opening.empty() && near_opening[std::size_t(v)]))) {
-      hand_over(kHandover);
-    }
-    // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
-    // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
-    // front takes over, gradually, so that the two zero sets join without a step (measured:
-    // switching opened small handles at holes). Elsewhere only unsupported solid (above) is
-    // handed over (measured: a handover wherever the fit is far from the data left the noisy
-    // two spheres a third component in their neck).
-    if (hole) hand_over(trust_factor);
-  }
-  // The fit moves the surface and may remove what the front got wrong (bridges across a neck it
-  // had not cut, handles of a noisy front), but not join what the front kept apart: where the two
-  // sides of a thin part or a crease lie within a fit's neighbourhood, its rounding opens handles
-  // (measured: the cup with the 10x density gradient and the holey double torus got one each).
-  // Far from the data (past the largest empty disc, as above) the front is held by curvature
-  // alone and a guess: there the fit may join too (measured: a coarse front spanned a torus's
-  // hole). Not over a spanned hole, where the rims' discs hold the front where the samples say
-  // the surface goes (measured: the fit opened a handle across a hole on the noisy, holey
-  // limb's thin part, seed 2, where the front had none). A void the merge cut off the outside
-  // bounds no data and is filled (measured: with the fit's solid kept over every hole the front
-  // had crept through, one 2 spacings wide inside the holey limb). Bubbles and specks narrower
-  // than a spacing go last (measured: a one-vertex void in the noisy, holey limb and one in the
-  // cup's wall).
-  Eigen::VectorXd front = u;
-  cap_at_walls<D>(mesh, front);
-  cap_at_walls<D>(mesh, values);
-  // In a gap between facing sheets the data's normals on both sides say outside, so the fit may
-  // open it even where that joins: the front stalls short in a slit 3-4 spacings wide and its
-  // pins hold a membrane across it (measured: the scanned triple torus's middle hole, genus 2).
-  std::vector<char> may_join(values.size());
-  for (std::size_t v = 0; v < values.size(); ++v) {
-    may_join[v] = !is_over_hole(v) && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
-  }
-  for (std::size_t i = 0; i < disputed.size(); ++i) {
-    if (in_gap[i]) may_join[std::size_t(band_vertices[disputed[i]])] = 1;
-  }
-  merge_without_joins<D>(mesh, front, values, may_join);
-  fill_cut_off_voids<D>(mesh, front, values);
-  absorb_small_parts<D>(mesh, neighbours, scale, values);
-  r.surface = extract_closed_surface(mesh, data.points(), values, threads);
-  const Points<D> extracted = fit_share.empty() ? Points<D>() : r.surface.vertices;
-  r.normals = fit.project(r.surface.vertices, threads);
-  for (std::size_t i = 0; i < extracted.size(); ++i) {
+  FittedField f = fitted_field(mesh, neighbours, fit, u, scale, distance, trust_factor, over_hole, near_opening, data, normals, threads);
+  r.surface = extract_closed_surface(mesh, data.points(), f.values, threads);
+  std::vector<double> share, vertex_scale(r.surface.vertices.size());
+  for (std::size_t i = 0; i < vertex_scale.size(); ++i) {
     const EdgePoint& e = r.surface.sources[i];
-    const double share = (1.0 - e.t) * fit_share[std::size_t(e.a)] + e.t * fit_share[std::size_t(e.b)];
-    if (share < 1.0) r.surface.vertices[i] = extracted[i] + share * (r.surface.vertices[i] - extracted[i]);
+    vertex_scale[i] = (1.0 - e.t) * scale[e.a] + e.t * scale[e.b];
+    if (!f.fit_share.empty()) share.push_back((1.0 - e.t) * f.fit_share[std::size_t(e.a)] + e.t * f.fit_share[std::size_t(e.b)]);
   }
-  set_facet_normals(r.surface, fair_unsupported_parts(r, data, scale, threads), r.normals);
-  attach_volume(r, mesh, values, volume);
+  project_onto_fit(r, fit, share, vertex_scale, data, threads);
+  attach_volume(r, mesh, f.values, volume);
 }
 
 template <int D>
@@ -268,7 +153,11 @@ QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D
   return QuadricImplicit<D>(data, normals, point_scale, fit_noise, threads, &nearest, progress);
 }
 
+template void project_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const std::vector<double>&, const std::vector<double>&,
+                                      const NearestPointIndex<2>&, int);
 template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
+template void project_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const std::vector<double>&, const std::vector<double>&,
+                                      const NearestPointIndex<3>&, int);
 template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
 template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int,
                                             const Progress&);

@@ -26,6 +26,13 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
                 bool volume, int threads);
 
+/// @brief The surface extracted from the fitted field, onto F: each vertex projected by its
+/// `share` (empty: in full), normals F's; the unsupported parts (farther than kUnsupported
+/// `vertex_scale` from the data) faired and given their facets' normals.
+template <int D>
+void project_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const std::vector<double>& share,
+                      const std::vector<double>& vertex_scale, const NearestPointIndex<D>& data, int threads);
+
 /// @brief On an anisotropic mesh: the output's facets refined onto the fit as finely as an
 /// isotropic mesh would give them (curve_refinement.h, surface_refinement.h), to a share of the
 /// vertex scale (growing with the distance to the data) interpolated at each output vertex.
