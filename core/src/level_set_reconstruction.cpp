@@ -18,6 +18,7 @@
 #include "stage_clock.h"
 #include "surface/closed_surface.h"
 #include "surface/facet_normals.h"
+#include "surface/unsupported_parts.h"
 #include "tiles/tiled_solve.h"
 
 namespace lsr {
@@ -86,18 +87,22 @@ void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, d
   if (r.status == ReconstructionStatus::cancelled) return;
   if (!sampled.in.kept.empty()) r.point_normals = sampled.in.input_normals(every_point_normals(sampled.left_out, tiled.normals), r.input_points);
   r.surface = std::move(tiled.surface);
+  drop_unsupported_pieces(r.surface, sampled.data.points(), o.limits.threads);
   if (o.output.fit_surface) {
     progress.update("fit", -1.0);
     const QuadricImplicit<D> fit = fit_quadrics(sampled.data, tiled.normals, sampled.point_scale, o.limits.threads, progress);
-    r.normals = fit.project(r.surface.vertices, o.limits.threads);
+    // A vertex's scale: its nearest sample's.
+    LargeVector<Index> nearest;
+    sampled.data.query_k(r.surface.vertices, 1, nearest, o.limits.threads);
+    std::vector<double> vertex_scale(r.surface.vertices.size());
+    for (std::size_t i = 0; i < vertex_scale.size(); ++i) vertex_scale[i] = sampled.point_scale[std::size_t(nearest[i])];
+    project_onto_fit(r, fit, {}, vertex_scale, sampled.data, o.limits.threads);
     clock.end("fit");
   } else {
     r.output_level = tiled.level / sampled.box.scale();
+    r.normals.assign(r.surface.vertices.size(), Vec<D>::Zero());
+    set_facet_normals(r.surface, std::vector<char>(r.surface.vertices.size(), 1), r.normals);
   }
-  // Without the fit, and where the fit's normal points into the facets: theirs.
-  const bool from_facets = r.normals.empty();
-  if (from_facets) r.normals.assign(r.surface.vertices.size(), Vec<D>::Zero());
-  set_facet_normals(r.surface, std::vector<char>(r.surface.vertices.size(), from_facets ? 1 : 0), r.normals);
 }
 
 template <int D>

@@ -56,6 +56,56 @@ std::size_t drop_unsupported_parts(const SimplexMesh<D>& mesh, const LevelSetMes
   return flipped;
 }
 
+template <int D>
+std::size_t drop_unsupported_pieces(LevelSetMesh<D>& surface, const Points<D>& points, int threads) {
+  const std::size_t nv = surface.vertices.size();
+  if (nv == 0 || points.empty()) return 0;
+  std::vector<Index> root(nv);
+  for (std::size_t v = 0; v < nv; ++v) root[v] = Index(v);
+  const auto find = [&](Index v) {
+    while (root[std::size_t(v)] != v) v = root[std::size_t(v)] = root[std::size_t(root[std::size_t(v)])];
+    return v;
+  };
+  for (const auto& f : surface.facets) {
+    for (int k = 1; k < D; ++k) {
+      const Index a = find(f[0]), b = find(f[std::size_t(k)]);
+      if (a != b) root[std::size_t(std::max(a, b))] = std::min(a, b);
+    }
+  }
+  std::vector<Index> owned(nv, 0);  // by root
+  std::size_t pieces = 0;
+  for (std::size_t v = 0; v < nv; ++v) pieces += find(Index(v)) == Index(v);
+  if (pieces <= 1) return 0;
+  std::vector<double> distance;
+  std::vector<Index> nearest;
+  NearestPointIndex<D>(surface.vertices).query(points, distance, &nearest, threads);
+  for (Index i : nearest) ++owned[std::size_t(find(i))];
+  std::vector<Index> renumbered(nv, -1);
+  Points<D> kept;
+  std::size_t dropped = 0;
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Index p = find(Index(v));
+    if (owned[std::size_t(p)] > D) {
+      renumbered[v] = Index(kept.size());
+      kept.push_back(surface.vertices[v]);
+    } else {
+      dropped += p == Index(v);
+    }
+  }
+  if (dropped == 0) return 0;
+  std::vector<std::array<Index, D>> facets;
+  for (auto f : surface.facets) {
+    if (renumbered[std::size_t(f[0])] < 0) continue;
+    for (Index& v : f) v = renumbered[std::size_t(v)];
+    facets.push_back(f);
+  }
+  surface.vertices = std::move(kept);
+  surface.facets = std::move(facets);
+  return dropped;
+}
+
+template std::size_t drop_unsupported_pieces<2>(LevelSetMesh<2>&, const Points<2>&, int);
+template std::size_t drop_unsupported_pieces<3>(LevelSetMesh<3>&, const Points<3>&, int);
 template std::size_t drop_unsupported_parts<2>(const SimplexMesh<2>&, const LevelSetMesh<2>&, const Points<2>&,
                                                std::vector<double>&, int);
 template std::size_t drop_unsupported_parts<3>(const SimplexMesh<3>&, const LevelSetMesh<3>&, const Points<3>&,

@@ -30,4 +30,12 @@ template <int D>
 std::size_t drop_unsupported_parts(const SimplexMesh<D>& mesh, const LevelSetMesh<D>& surface,
                                    const Points<D>& points, std::vector<double>& values, int threads = 0);
 
+/// @brief The same on a surface without its mesh (tiles welded, tiles/tiled_solve.h): drops
+/// each connected piece of `surface` (through shared vertices) nearest to fewer than D + 1 of
+/// `points`, a solid's or a void's whole boundary when it is one piece. The vertices keep their
+/// order; `sources` must be empty.
+/// @return the number of pieces dropped
+template <int D>
+std::size_t drop_unsupported_pieces(LevelSetMesh<D>& surface, const Points<D>& points, int threads = 0);
+
 }  // namespace lsr

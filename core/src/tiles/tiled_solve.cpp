@@ -3,6 +3,9 @@
 #include "tiles/tiled_solve.h"
 
 #include "evolution/front_on_mesh.h"
+#include "evolution/renormalization.h"
+#include "fit/fitted_field.h"
+#include "fit/fitted_surface.h"
 #include "geometry/coordinate_hash.h"
 #include "mesh/data_mesh.h"
 #include "mesh/tile_core.h"
@@ -109,6 +112,31 @@ void add_tile_result(ReconstructionResult<D>& r, const ReconstructionResult<D>& 
   r.solver_iterations += t.solver_iterations;
 }
 
+
+// The fit's field (fit/fitted_field.h) over the tile's region, from the blended quadrics of the
+// points within a margin of it, oriented by the tile's front; u beyond the region.
+template <int D>
+std::vector<double> tile_fitted_field(const SampledData<D>& sampled, const Points<D>& normals, const FrontOnMesh<D>& front,
+                                      const SimplexMesh<D>& mesh, const TileBox<D>& box, double margin, const ReconstructionOptions& o) {
+  const Points<D>& points = sampled.data.points();
+  const Vec<D> lo = box.region_lo.array() - margin, hi = box.region_hi.array() + margin;
+  Points<D> near, near_normals;
+  std::vector<double> near_scale;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!in_closed_box<D>(points[i], lo, hi)) continue;
+    near.push_back(points[i]);
+    near_normals.push_back(normals[i]);
+    near_scale.push_back(sampled.point_scale[i]);
+  }
+  std::vector<char> fitted(mesh.vertices.size());
+  for (std::size_t v = 0; v < fitted.size(); ++v) fitted[v] = in_closed_box<D>(mesh.vertices[v], box.region_lo, box.region_hi);
+  const NearestPointIndex<D> index(std::move(near));
+  const QuadricImplicit<D> fit = fit_quadrics(index, near_normals, near_scale, o.limits.threads);
+  return fitted_field(mesh, front.neighbours, fit, front.best, front.at_vertex.scale, front.at_vertex.distance, o.sampling.gap_factor,
+                      front.over_hole, front.near_opening, sampled.data, normals, o.limits.threads, fitted)
+      .values;
+}
+
 }  // namespace
 
 template <int D>
@@ -176,7 +204,7 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
     add_tile_result(r, tr, t == 0);
     if (tr.status == ReconstructionStatus::cancelled) return TiledFront<D>();
     const SimplexMesh<D>& mesh = adaptive.mesh;
-    const Eigen::VectorXd& u = front.best;
+    Eigen::VectorXd& u = front.best;
 
     // The data points it owns take their normals and values from its front.
     const Points<D> normals = oriented_normals(sampled.sampling, front.at, front.ops.gradient_times(u));
@@ -187,10 +215,17 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
       for (int j = 0; j <= D; ++j) value += front.at[i].weights[j] * u[front.at[i].vertices[j]];
       on_data.push_back(value);
     }
+    if (o.output.fit_surface) {
+      // The fit's field in its region, from a fit of the points near it with its own normals.
+      if (!front.best_is_distance) renormalize(mesh, front.neighbours, u, front.band, o.limits.threads);
+      front.ops = P1Operators<D>();
+      u = Eigen::Map<const Eigen::VectorXd>(tile_fitted_field(sampled, normals, front, mesh, box, margin, o).data(), u.size());
+    }
     near_front.emplace_back(t, core_shell<D>(mesh, u, box, window, seam_value));
   }
   progress.update("extract", -1.0);
-  out.level = o.output.level_through_data && !on_data.empty() ? median(on_data) : 0.0;
+  // With the fit, its zero set (as on one mesh).
+  out.level = !o.output.fit_surface && o.output.level_through_data && !on_data.empty() ? median(on_data) : 0.0;
   if (std::abs(out.level) >= window) out.level = 0.0;  // a front far from its data: its own level
   StitchedSurface<D> stitched(kOutputEdgeMargin, o.limits.threads);
   for (auto& [t, field] : near_front) {
