@@ -129,5 +129,45 @@ TEST(UnsupportedParts, AVoidWithoutSamplesIsFilled) {
   EXPECT_EQ(parts<3>(grid.mesh, u, false), 1u);
 }
 
+// Without the mesh (a welded surface): the pieces dropped are the parts' boundaries that
+// drop_unsupported_parts removes, so the surface left is the one extracted after it.
+template <int D>
+void pieces_as_parts(const std::function<double(const Vec<D>&)>& f, const Points<D>& points, std::size_t expected) {
+  const Grid<D> grid;
+  std::vector<double> u = grid.sample(f);
+  LevelSetMesh<D> pieces = extract_zero_level_set(grid.mesh, u);
+  pieces.sources.clear();
+  EXPECT_EQ(drop_unsupported_pieces<D>(pieces, points), expected);
+  drop<D>(grid, u, points);
+  const LevelSetMesh<D> parts = extract_zero_level_set(grid.mesh, u);
+  ASSERT_EQ(pieces.facets.size(), parts.facets.size());
+  const auto sorted = [](const LevelSetMesh<D>& s) {
+    std::vector<std::array<double, D>> x(s.vertices.size());
+    for (std::size_t i = 0; i < x.size(); ++i) std::copy_n(s.vertices[i].data(), D, x[i].begin());
+    std::sort(x.begin(), x.end());
+    return x;
+  };
+  EXPECT_EQ(sorted(pieces), sorted(parts));
+}
+
+TEST(UnsupportedParts, PiecesOfASurfaceGoAsTheirParts) {
+  const Vec<3> a(0.3, 0.5, 0.5), b(0.72, 0.5, 0.5), c = Vec<3>::Constant(0.5);
+  const auto balls = [&](const Vec<3>& x) { return std::min(ball<3>(x, a, 0.15), ball<3>(x, b, 0.1)); };
+  Points<3> on_a, on_both;
+  add_sphere_points<3>(on_a, a, 0.15, 300, 7);
+  on_both = on_a;
+  add_sphere_points<3>(on_both, b, 0.1, 4, 8);
+  pieces_as_parts<3>(balls, on_a, 1);
+  pieces_as_parts<3>(balls, on_both, 0);
+  const auto shell = [&](const Vec<3>& x) { return std::max(ball<3>(x, c, 0.3), -ball<3>(x, c, 0.15)); };
+  Points<3> outer;
+  add_sphere_points<3>(outer, c, 0.3, 400, 9);
+  pieces_as_parts<3>(shell, outer, 1);
+  Points<2> on_disc;
+  add_sphere_points<2>(on_disc, Vec<2>(0.3, 0.5), 0.15, 100, 10);
+  pieces_as_parts<2>([](const Vec<2>& x) { return std::min(ball<2>(x, Vec<2>(0.3, 0.5), 0.15), ball<2>(x, Vec<2>(0.72, 0.5), 0.1)); },
+                     on_disc, 1);
+}
+
 }  // namespace
 }  // namespace lsr
