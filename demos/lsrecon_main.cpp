@@ -308,8 +308,9 @@ int share_run(const Cli& c) {
   if (status == lsr::ReconstructionStatus::cancelled) return 130;
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::fprintf(stderr, "lsrecon-mpi: rank %d of %d shared its run of the cloud, peak memory %.0f MiB\n",
-               c.solver.limits.exchange->worker(), c.solver.limits.exchange->workers(), double(usage.ru_maxrss) / 1024.0);
+  std::fprintf(stderr, "lsrecon-mpi: rank %d of %d shared its run of the cloud%s, peak memory %.0f MiB\n",
+               c.solver.limits.exchange->worker(), c.solver.limits.exchange->workers(),
+               c.solver.limits.solve_tiles > 1 ? " and solved its tiles" : "", double(usage.ru_maxrss) / 1024.0);
   return 0;
 }
 #endif
@@ -378,7 +379,8 @@ void wait_for_all_ranks() {
 }
 
 // lsrecon-mpi: every rank parses the same command line and reads its share of the input (from
-// shared storage); rank 0 runs lsrecon, the others share the sampling with it and stop. A rank
+// shared storage); rank 0 runs lsrecon, the others share the sampling (and the front's tiles,
+// --solve-tiles) with it and stop. A rank
 // that fails aborts them all, as the others would wait for it.
 int main(int argc, char** argv) {
   int provided = 0;

@@ -84,7 +84,7 @@ void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, d
   const std::vector<double> size = local_mesh_sizes<D>(sampled.point_scale, o.mesh.h_min, o.mesh.max_resolution);
   for (std::size_t i = 0; i < size.size(); ++i) sampled.point_scale[i] = std::max(sampled.point_scale[i], size[i]);
   TiledFront<D> tiled = solve_in_tiles(sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
-  if (r.status == ReconstructionStatus::cancelled) return;
+  if (r.status == ReconstructionStatus::cancelled || r.status == ReconstructionStatus::shared) return;  // or another worker's
   if (!sampled.in.kept.empty()) r.point_normals = sampled.in.input_normals(every_point_normals(sampled.left_out, tiled.normals), r.input_points);
   r.surface = std::move(tiled.surface);
   drop_unsupported_pieces(r.surface, sampled.data.points(), o.limits.threads);

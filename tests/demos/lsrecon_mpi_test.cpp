@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file lsrecon_mpi_test.cpp
 /// @brief lsrecon-mpi under mpirun -np 2 on one machine: the ranks split the cloud and share the
-/// sampling, and rank 0 writes what lsrecon --tiles 2 writes in one process, byte for byte; a
-/// rank that fails stops them all and nothing is written.
+/// sampling (and the front's tiles), and rank 0 writes what lsrecon --tiles 2 writes in one
+/// process, byte for byte; a rank that fails stops them all and nothing is written.
 #include "cli_fixture.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/testdata/simulated_scan.h"
@@ -31,7 +31,8 @@ const std::string kMpiRun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CON
 // again) and copies at the end of the file (their first copies in the other rank's share).
 // Each rank reads half the file, the ranks sort the cloud between them and each estimates its
 // run with a halo; rank 0 gets the sample. At --max-resolution 48 the sample is thinned (each
-// run's, with a halo of its own).
+// run's, with a halo of its own). With --solve-tiles 2 every rank gets the sample, solves every
+// other of the front's 8 tiles and sends rank 0 what it welds (tiles/tile_outputs.h).
 TEST_F(Cli, MpiRanksShareTheTilesAndRankZeroWritesWhatOneProcessWrites) {
   lsr::ScannerSettings scanner;
   scanner.from_above = true;
@@ -42,12 +43,15 @@ TEST_F(Cli, MpiRanksShareTheTilesAndRankZeroWritesWhatOneProcessWrites) {
   for (std::size_t i = 0; i < 300; i += 3) cloud.push_back(cloud[i]);
   lsr::adapters::write_points(path("scan.ply"), cloud);
 
-  for (const std::string options : {"", " --max-resolution 48"}) {
+  for (const std::string options : {"", " --max-resolution 48", " --solve-tiles 2"}) {
     const CliRun one = run(path("scan.ply") + " " + path("one.ply") + " --tiles 2 --report " + path("one.json") + options);
     ASSERT_EQ(one.status, 0) << one.output;
     const CliRun two = run_program(kMpiRun, path("scan.ply") + " " + path("two.ply") + " --report " + path("two.json") + options);
     ASSERT_EQ(two.status, 0) << two.output;
-    EXPECT_NE(two.output.find("rank 1 of 2 shared its run of the cloud, peak memory"), std::string::npos) << two.output;
+    const bool tiled = options == " --solve-tiles 2";
+    EXPECT_NE(two.output.find(std::string("rank 1 of 2 shared its run of the cloud") + (tiled ? " and solved its tiles" : "") + ", peak memory"),
+              std::string::npos)
+        << two.output;
     EXPECT_EQ(read("one.ply"), read("two.ply")) << options;
     expect_closed_mesh(path("two.ply"), 2);
     const nlohmann::json a = nlohmann::json::parse(read("one.json")), b = nlohmann::json::parse(read("two.json"));

@@ -15,11 +15,13 @@
 namespace lsr::detail {
 namespace {
 
-// This worker's values of its own points [first, end) to worker 0, which gets them all in order.
+// This worker's values of its own points [first, end) to worker 0, or to every worker, which
+// gets them all in order.
 template <class T, class A>
-void gather_run(const TileExchange* x, std::vector<T, A>& values, std::size_t first, std::size_t end) {
-  std::vector<std::vector<T>> out(workers_of(x));
-  out[0].assign(values.begin() + long(first), values.begin() + long(end));
+void gather_run(const TileExchange* x, std::vector<T, A>& values, std::size_t first, std::size_t end, bool everyone) {
+  std::vector<std::vector<T>> out(everyone ? workers_of(x) : 1);
+  for (auto& to : out) to.assign(values.begin() + long(first), values.begin() + long(end));
+  out.resize(workers_of(x));
   values.clear();
   for (auto& from : exchange_values(x, out)) values.insert(values.end(), from.begin(), from.end());
 }
@@ -75,23 +77,25 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
   LeftOut<D> left_out = keep_mesh_resolution(*index, sampling, point_scale,
                                              local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads, &halo);
   // Worker 0 gets every run's sample, in the cloud's order: the run's values, thinned to its
-  // kept points (all its own if the cloud was not thinned; none, maybe, if it was).
+  // kept points (all its own if the cloud was not thinned; none, maybe, if it was). Every
+  // worker does when they share the front's tiles too (tiles/tile_outputs.h).
+  const bool everyone = o.limits.solve_tiles > 1;
   const bool thinned = point_scale.size() != index->points().size();
   const std::size_t from = thinned ? 0 : first, to = thinned ? point_scale.size() : end;
   Points<D> points;
   for (std::size_t i = from; i < to; ++i) points.push_back(index->points()[thinned ? std::size_t(left_out.kept[i]) : i]);
   index.reset();
-  gather_run(x, points, 0, points.size());
-  gather_run(x, sampling.spacing, from, to);
-  gather_run(x, sampling.noise, from, to);
-  gather_run(x, sampling.normals, from, to);
-  gather_run(x, sampling.gap, from, to);
+  gather_run(x, points, 0, points.size(), everyone);
+  gather_run(x, sampling.spacing, from, to, everyone);
+  gather_run(x, sampling.noise, from, to, everyone);
+  gather_run(x, sampling.normals, from, to, everyone);
+  gather_run(x, sampling.gap, from, to, everyone);
   // A run that kept no point has them empty either way.
-  if (sum_over_workers(x, std::size_t(!sampling.rim.empty())) > 0) gather_run(x, sampling.rim, from, to);
-  if (sum_over_workers(x, std::size_t(!sampling.height_fields.empty())) > 0) gather_run(x, sampling.height_fields, from, to);
-  gather_run(x, point_scale, from, to);
-  gather_run(x, left_out.represented, 0, left_out.represented.size());  // empty where not thinned
-  if (worker_of(x) != 0) return std::nullopt;
+  if (sum_over_workers(x, std::size_t(!sampling.rim.empty())) > 0) gather_run(x, sampling.rim, from, to, everyone);
+  if (sum_over_workers(x, std::size_t(!sampling.height_fields.empty())) > 0) gather_run(x, sampling.height_fields, from, to, everyone);
+  gather_run(x, point_scale, from, to, everyone);
+  gather_run(x, left_out.represented, 0, left_out.represented.size(), everyone);  // empty where not thinned
+  if (worker_of(x) != 0 && !everyone) return std::nullopt;
   LeftOut<D> sample;
   sample.represented = std::move(left_out.represented);
   return SampledData<D>{{}, box, NearestPointIndex<D>(std::move(points)), std::move(sampling), std::move(point_scale), std::move(sample), spacing, noise};

@@ -13,6 +13,8 @@
 #include "start/outside_flood_fill.h"
 #include "surface/closed_surface.h"
 #include "surface/stitched_extraction.h"
+#include "sampling/worker_collectives.h"
+#include "tiles/tile_outputs.h"
 
 #include <algorithm>
 #include <array>
@@ -67,8 +69,8 @@ using SeamValues = std::unordered_map<std::array<double, D>, double, CoordinateH
 // (the other tiles' seam layers).
 template <int D>
 TileField<D> core_shell(const SimplexMesh<D>& mesh, const Eigen::VectorXd& u, const TileBox<D>& box, double window,
-                        SeamValues<D>& seam) {
-  std::vector<char> kept(mesh.simplices.size(), 0);
+                        std::vector<SeamValue<D>>& seam) {
+  std::vector<char> kept(mesh.simplices.size(), 0), in_seam(mesh.vertices.size(), 0);
   for (std::size_t s = 0; s < mesh.simplices.size(); ++s) {
     Vec<D> c = Vec<D>::Zero();
     double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
@@ -84,34 +86,13 @@ TileField<D> core_shell(const SimplexMesh<D>& mesh, const Eigen::VectorXd& u, co
       kept[s] = !all_owned || (lowest <= window && highest >= -window);
       continue;
     }
-    for (Index v : mesh.simplices[s]) {
-      const Vec<D>& x = mesh.vertices[std::size_t(v)];
-      if (in_box<D>(x, box.lo, box.hi)) seam[key_of<D>(x)] = u[v];
-    }
+    for (Index v : mesh.simplices[s]) in_seam[std::size_t(v)] = in_box<D>(mesh.vertices[std::size_t(v)], box.lo, box.hi);
+  }
+  for (std::size_t v = 0; v < in_seam.size(); ++v) {
+    if (in_seam[v]) seam.push_back({key_of<D>(mesh.vertices[v]), u[Eigen::Index(v)]});
   }
   return field_on<D>(select_simplices<D>(mesh, kept), u);
 }
-
-template <int D>
-void add_tile_result(ReconstructionResult<D>& r, const ReconstructionResult<D>& t, bool first) {
-  auto worse = [](ReconstructionStatus a, ReconstructionStatus b) { return int(a) > int(b) ? a : b; };
-  r.status = first ? t.status : worse(r.status, t.status);
-  r.stalled = r.stalled || t.stalled;
-  r.iterations = std::max(r.iterations, t.iterations);
-  r.best_iteration = std::max(r.best_iteration, t.best_iteration);
-  r.residual = std::max(r.residual, t.residual);
-  r.tolerance = std::max(r.tolerance, t.tolerance);
-  r.unreached_points = std::max(r.unreached_points, t.unreached_points);
-  r.mesh_vertices = std::max(r.mesh_vertices, t.mesh_vertices);
-  r.mesh_simplices = std::max(r.mesh_simplices, t.mesh_simplices);
-  r.h_min = first ? t.h_min : std::min(r.h_min, t.h_min);
-  r.tagged_start = t.tagged_start;
-  r.sealed_cavities = std::max(r.sealed_cavities, t.sealed_cavities);
-  r.open_side_points = std::max(r.open_side_points, t.open_side_points);
-  r.time_step = t.time_step, r.alpha = t.alpha, r.curvature_weight = t.curvature_weight;
-  r.solver_iterations += t.solver_iterations;
-}
-
 
 // The fit's field (fit/fitted_field.h) over the tile's region, from the blended quadrics of the
 // points within a margin of it, oriented by the tile's front; u beyond the region.
@@ -137,6 +118,76 @@ std::vector<double> tile_fitted_field(const SampledData<D>& sampled, const Point
       .values;
 }
 
+// The background cells shrink with the tiles, and a tile's mesh equals the whole mesh in its
+// core once its region reaches two of them past it (mesh/tile_core.h).
+template <int D>
+ReconstructionOptions tile_options(const ReconstructionOptions& o) {
+  ReconstructionOptions to = o;
+  to.mesh.h_max = std::min(o.mesh.h_max, 1.0 / (8.0 * o.limits.solve_tiles));
+  return to;
+}
+
+// Tile t alone: its mesh, its front, with the fit its fitted field; what it gives the weld.
+template <int D>
+TileOutput<D> solve_tile(int t, const SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+                         const SignedDistance<D>* custom_start, const Progress& progress, StageClock& clock) {
+  const int k = o.limits.solve_tiles;
+  const ReconstructionOptions to = tile_options<D>(o);
+  const double margin = 2.0 * to.mesh.h_max;
+  const Points<D>& points = sampled.data.points();
+  const TileBox<D> box = tile_box<D>(t, k, margin);
+  const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(int(std::pow(k, D))) + " ";
+  const Progress tile_progress([&](const std::string& stage, double fraction) {
+    progress.update(name + stage, fraction);
+    return true;
+  });
+  std::vector<double> scale = sampled.point_scale;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!in_closed_box<D>(points[i], box.region_lo, box.region_hi)) scale[i] = std::max(scale[i], kCoarseSize<D>);
+  }
+  ReconstructionResult<D> tr;
+  AdaptiveMesh<D> adaptive = data_mesh(sampled.data, scale, to, max_vertices, tile_progress, tr.h_min);
+  tr.mesh_vertices = Index(adaptive.mesh.vertices.size());
+  tr.mesh_simplices = Index(adaptive.mesh.simplices.size());
+  clock.end("mesh");
+  // Its stopping test reads its core and half its margin: not the coarse part, whose front is
+  // other tiles' to place, nor the fine front next to it, which the coarse one holds back
+  // (measured: tested in the whole region, the 2D star's tiles did not converge); not its
+  // core alone either: the front it keeps must have settled where its neighbours' fronts meet
+  // it (measured: tested in their cores, the tiles round the neck of two close spheres kept
+  // steps with and without the neck, and welded a handle).
+  const TileBox<D> tested = tile_box<D>(t, k, margin / 2.0);
+  const std::array<Vec<D>, 2> region{tested.region_lo, tested.region_hi};
+  FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock, &region);
+  TileOutput<D> out;
+  out.summary = tile_summary(tr, t);
+  if (tr.status == ReconstructionStatus::cancelled) return out;
+  const SimplexMesh<D>& mesh = adaptive.mesh;
+  Eigen::VectorXd& u = front.best;
+
+  // The data points it owns take their normals and values from its front.
+  const Points<D> normals = oriented_normals(sampled.sampling, front.at, front.ops.gradient_times(u));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!in_box<D>(points[i], box.lo, box.hi)) continue;
+    out.normals.push_back(normals[i]);
+    double value = 0.0;
+    for (int j = 0; j <= D; ++j) value += front.at[i].weights[j] * u[front.at[i].vertices[j]];
+    out.on_data.push_back(value);
+  }
+  if (o.output.fit_surface) {
+    // The fit's field in its region, from a fit of the points near it with its own normals.
+    if (!front.best_is_distance) renormalize(mesh, front.neighbours, u, front.band, o.limits.threads);
+    front.ops = P1Operators<D>();
+    u = Eigen::Map<const Eigen::VectorXd>(tile_fitted_field(sampled, normals, front, mesh, box, margin, o).data(), u.size());
+  }
+  out.shell = core_shell<D>(mesh, u, box, kLevelWindow * median(sampled.point_scale), out.seam);
+  out.summary.owned_points = out.normals.size();
+  out.summary.seam_vertices = out.seam.size();
+  out.summary.shell_vertices = out.shell.u.size();
+  out.summary.shell_simplices = out.shell.core.simplices.size();
+  return out;
+}
+
 }  // namespace
 
 template <int D>
@@ -158,78 +209,51 @@ TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const Reconstruction
   const int k = o.limits.solve_tiles;
   int tiles = 1;
   for (int a = 0; a < D; ++a) tiles *= k;
-  const Points<D>& points = sampled.data.points();
-  // The background cells shrink with the tiles, and a tile's mesh equals the whole mesh in its
-  // core once its region reaches two of them past it (mesh/tile_core.h).
-  ReconstructionOptions to = o;
-  to.mesh.h_max = std::min(o.mesh.h_max, 1.0 / (8.0 * k));
-  const double margin = 2.0 * to.mesh.h_max;
+  // Each worker solves every workers()-th tile; worker 0 welds them.
+  const TileExchange* x = o.limits.exchange.get();
+  std::vector<TileOutput<D>> solved;
+  for (int t = int(worker_of(x)); t < tiles; t += int(workers_of(x))) {
+    solved.push_back(solve_tile(t, sampled, o, hole_radius, max_vertices, custom_start, progress, clock));
+    if (solved.back().summary.status == ReconstructionStatus::cancelled) break;
+  }
+  solved = gather_tile_outputs<D>(x, std::move(solved));
+  if (worker_of(x) != 0) {
+    r.status = ReconstructionStatus::shared;
+    return TiledFront<D>();
+  }
 
-  TiledFront<D> out;
-  out.normals.assign(points.size(), Vec<D>::Zero());
   // The values of the seam vertices each tile owns; the core simplices near each tile's front
   // (those that read another tile's values: its seam layer), extracted once every tile is
   // solved, at the level through the data if asked (one level for all, or the seams would
   // open); u at the data points, each from its owner.
+  const Points<D>& points = sampled.data.points();
+  const double margin = 2.0 * tile_options<D>(o).mesh.h_max;
+  TiledFront<D> out;
+  out.normals.assign(points.size(), Vec<D>::Zero());
   SeamValues<D> seam_value;
-  std::vector<std::pair<int, TileField<D>>> near_front;
   std::vector<double> on_data;
   on_data.reserve(points.size());
-  const double window = kLevelWindow * median(sampled.point_scale);
-  for (int t = 0; t < tiles; ++t) {
-    const TileBox<D> box = tile_box<D>(t, k, margin);
-    const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(tiles) + " ";
-    const Progress tile_progress([&](const std::string& stage, double fraction) {
-      progress.update(name + stage, fraction);
-      return true;
-    });
-    std::vector<double> scale = sampled.point_scale;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!in_closed_box<D>(points[i], box.region_lo, box.region_hi)) scale[i] = std::max(scale[i], kCoarseSize<D>);
+  for (std::size_t i = 0; i < solved.size(); ++i) {
+    TileOutput<D>& t = solved[i];
+    add_tile_summary(r, t.summary, i == 0);
+    if (t.summary.status == ReconstructionStatus::cancelled) return TiledFront<D>();
+    const TileBox<D> box = tile_box<D>(t.summary.tile, k, margin);
+    for (std::size_t p = 0, j = 0; p < points.size(); ++p) {
+      if (in_box<D>(points[p], box.lo, box.hi)) out.normals[p] = t.normals[j++];
     }
-    ReconstructionResult<D> tr;
-    AdaptiveMesh<D> adaptive = data_mesh(sampled.data, scale, to, max_vertices, tile_progress, tr.h_min);
-    tr.mesh_vertices = Index(adaptive.mesh.vertices.size());
-    tr.mesh_simplices = Index(adaptive.mesh.simplices.size());
-    clock.end("mesh");
-    // Its stopping test reads its core and half its margin: not the coarse part, whose front is
-    // other tiles' to place, nor the fine front next to it, which the coarse one holds back
-    // (measured: tested in the whole region, the 2D star's tiles did not converge); not its
-    // core alone either: the front it keeps must have settled where its neighbours' fronts meet
-    // it (measured: tested in their cores, the tiles round the neck of two close spheres kept
-    // steps with and without the neck, and welded a handle).
-    const TileBox<D> tested = tile_box<D>(t, k, margin / 2.0);
-    const std::array<Vec<D>, 2> region{tested.region_lo, tested.region_hi};
-    FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock, &region);
-    add_tile_result(r, tr, t == 0);
-    if (tr.status == ReconstructionStatus::cancelled) return TiledFront<D>();
-    const SimplexMesh<D>& mesh = adaptive.mesh;
-    Eigen::VectorXd& u = front.best;
-
-    // The data points it owns take their normals and values from its front.
-    const Points<D> normals = oriented_normals(sampled.sampling, front.at, front.ops.gradient_times(u));
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (!in_box<D>(points[i], box.lo, box.hi)) continue;
-      out.normals[i] = normals[i];
-      double value = 0.0;
-      for (int j = 0; j <= D; ++j) value += front.at[i].weights[j] * u[front.at[i].vertices[j]];
-      on_data.push_back(value);
-    }
-    if (o.output.fit_surface) {
-      // The fit's field in its region, from a fit of the points near it with its own normals.
-      if (!front.best_is_distance) renormalize(mesh, front.neighbours, u, front.band, o.limits.threads);
-      front.ops = P1Operators<D>();
-      u = Eigen::Map<const Eigen::VectorXd>(tile_fitted_field(sampled, normals, front, mesh, box, margin, o).data(), u.size());
-    }
-    near_front.emplace_back(t, core_shell<D>(mesh, u, box, window, seam_value));
+    on_data.insert(on_data.end(), t.on_data.begin(), t.on_data.end());
+    for (const SeamValue<D>& v : t.seam) seam_value[v.x] = v.u;
+    t.normals = Points<D>(), t.on_data = {}, t.seam = {};
   }
   progress.update("extract", -1.0);
   // With the fit, its zero set (as on one mesh).
+  const double window = kLevelWindow * median(sampled.point_scale);
   out.level = !o.output.fit_surface && o.output.level_through_data && !on_data.empty() ? median(on_data) : 0.0;
   if (std::abs(out.level) >= window) out.level = 0.0;  // a front far from its data: its own level
   StitchedSurface<D> stitched(kOutputEdgeMargin, o.limits.threads);
-  for (auto& [t, field] : near_front) {
-    const TileBox<D> box = tile_box<D>(t, k, margin);
+  for (TileOutput<D>& t : solved) {
+    const TileBox<D> box = tile_box<D>(t.summary.tile, k, margin);
+    TileField<D>& field = t.shell;
     for (std::size_t i = 0; i < field.u.size(); ++i) {
       const Vec<D>& x = field.core.vertices[i];
       if (!in_box<D>(x, box.lo, box.hi)) {
