@@ -10,10 +10,10 @@
 #include "mesh/data_mesh.h"
 #include "mesh/tile_core.h"
 #include "sampling/local_sampling.h"
+#include "sampling/worker_collectives.h"
 #include "start/outside_flood_fill.h"
 #include "surface/closed_surface.h"
 #include "surface/stitched_extraction.h"
-#include "sampling/worker_collectives.h"
 #include "tiles/tile_outputs.h"
 
 #include <algorithm>
@@ -118,6 +118,13 @@ std::vector<double> tile_fitted_field(const SampledData<D>& sampled, const Point
       .values;
 }
 
+template <int D>
+int tile_count(int k) {
+  int tiles = 1;
+  for (int a = 0; a < D; ++a) tiles *= k;
+  return tiles;
+}
+
 // The background cells shrink with the tiles, and a tile's mesh equals the whole mesh in its
 // core once its region reaches two of them past it (mesh/tile_core.h).
 template <int D>
@@ -136,7 +143,7 @@ TileOutput<D> solve_tile(int t, const SampledData<D>& sampled, const Reconstruct
   const double margin = 2.0 * to.mesh.h_max;
   const Points<D>& points = sampled.data.points();
   const TileBox<D> box = tile_box<D>(t, k, margin);
-  const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(int(std::pow(k, D))) + " ";
+  const std::string name = "tile " + std::to_string(t + 1) + "/" + std::to_string(tile_count<D>(k)) + " ";
   const Progress tile_progress([&](const std::string& stage, double fraction) {
     progress.update(name + stage, fraction);
     return true;
@@ -206,9 +213,7 @@ TileBox<D> tile_box(int t, int k, double margin) {
 template <int D>
 TiledFront<D> solve_in_tiles(const SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
                              const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
-  const int k = o.limits.solve_tiles;
-  int tiles = 1;
-  for (int a = 0; a < D; ++a) tiles *= k;
+  const int k = o.limits.solve_tiles, tiles = tile_count<D>(k);
   // Each worker solves every workers()-th tile; worker 0 welds them.
   const TileExchange* x = o.limits.exchange.get();
   std::vector<TileOutput<D>> solved;
