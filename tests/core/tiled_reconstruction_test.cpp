@@ -88,17 +88,21 @@ TEST(TiledReconstruction, ACircleInFourTilesIsOneCurveWithinTwoHmin) {
   EXPECT_LE(worst, 2 * r.tolerance);
 }
 
-// A core simplex whose own values lie far from the level may still be crossed with its seam
-// vertices' owners' values: the seam layers are kept whole (measured: the front of this scan,
-// whose tiles' fronts differ most at the seams, had an open seam without).
-TEST(TiledReconstruction, TheFrontOfATorusScannedFromAboveWeldsClosed) {
+ReconstructionResult<3> torus_scanned_from_above_in_eight_tiles(bool fit) {
   ScannerSettings scanner;
   scanner.from_above = true;
   const SampledShape scan = simulate_scan(make_test_shape("torus"), scanner, 2011);
   ReconstructionOptions o;
   o.limits.solve_tiles = 2;
-  o.output.fit_surface = false;
-  const auto r = reconstruct<3>(scan.points, o);
+  o.output.fit_surface = fit;
+  return reconstruct<3>(scan.points, o);
+}
+
+// A core simplex whose own values lie far from the level may still be crossed with its seam
+// vertices' owners' values: the seam layers are kept whole (measured: the front of this scan,
+// whose tiles' fronts differ most at the seams, had an open seam without).
+TEST(TiledReconstruction, TheFrontOfATorusScannedFromAboveWeldsClosed) {
+  const auto r = torus_scanned_from_above_in_eight_tiles(false);
   const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
   EXPECT_TRUE(t.watertight && t.edge_manifold && t.vertex_manifold && t.oriented);
 }
@@ -107,12 +111,7 @@ TEST(TiledReconstruction, TheFrontOfATorusScannedFromAboveWeldsClosed) {
 // one mesh does: the same scan's front has handles in tiles and on one mesh, the fit none
 // (measured without the tiles' fits: genus 10 and a void).
 TEST(TiledReconstruction, ATorusScannedFromAboveInEightTilesIsATorus) {
-  ScannerSettings scanner;
-  scanner.from_above = true;
-  const SampledShape scan = simulate_scan(make_test_shape("torus"), scanner, 2011);
-  ReconstructionOptions o;
-  o.limits.solve_tiles = 2;
-  expect_same_topology(reconstruct<3>(scan.points, o), {1});
+  expect_same_topology(torus_scanned_from_above_in_eight_tiles(true), {1});
 }
 
 TEST(TiledReconstruction, TilesWithoutAVolumeMeshOrAnAnisotropicMeshAreRefused) {

@@ -41,16 +41,23 @@ TEST(TiledSolve, CoresPartitionTheBoxAndLieInTheirRegions) {
   }
 }
 
-// 3 x 3 tiles of a circle: cut planes off the mesh's dyadic lines (3D, through the
-// reconstruction: tiled_reconstruction_test.cpp).
-TEST(TiledSolve, EverySeamVertexIsGivenByItsOwnerAndTheCircleIsClosed) {
-  const Points<2> points = Circle{Vec<2>(0, 0), 1.0}.sample(3000);
-  ReconstructionOptions o;
-  o.limits.solve_tiles = 3;
+// A circle's sample, to be solved in 3 x 3 tiles: cut planes off the mesh's dyadic lines (3D,
+// through the reconstruction: tiled_reconstruction_test.cpp).
+struct CircleInNineTiles {
+  ReconstructionOptions o = nine_tiles();
   ReconstructionResult<2> r;
-  StageClock clock(r.seconds, r.stages);
-  const SampledData<2> sampled = sampled_data<2>(points, o, HeightFieldsAt::none, Progress(), r, clock);
-  const TiledFront<2> f = solve_in_tiles<2>(sampled, o, 0.0, 20'000'000, nullptr, r, Progress(), clock);
+  StageClock clock{r.seconds, r.stages};
+  SampledData<2> sampled = sampled_data<2>(Circle{Vec<2>(0, 0), 1.0}.sample(3000), o, HeightFieldsAt::none, Progress(), r, clock);
+  static ReconstructionOptions nine_tiles() {
+    ReconstructionOptions nine;
+    nine.limits.solve_tiles = 3;
+    return nine;
+  }
+};
+
+TEST(TiledSolve, EverySeamVertexIsGivenByItsOwnerAndTheCircleIsClosed) {
+  CircleInNineTiles c;
+  const TiledFront<2> f = solve_in_tiles<2>(c.sampled, c.o, 0.0, 20'000'000, nullptr, c.r, Progress(), c.clock);
   EXPECT_EQ(f.seam_mismatches, 0);
   // Closed: every point ends two segments, one as its first point and one as its second.
   std::vector<int> first(f.surface.vertices.size(), 0), second(f.surface.vertices.size(), 0);
@@ -62,13 +69,11 @@ TEST(TiledSolve, EverySeamVertexIsGivenByItsOwnerAndTheCircleIsClosed) {
 // Three workers (threads) share the 9 tiles of a circle, unevenly (4, 3 and 2 tiles): worker 0
 // gets them in tile order and welds the same bytes as one process, with the same loop fields.
 TEST(TiledSolve, WorkersSolveTheirTilesAndWorkerZeroWeldsWhatOneProcessWelds) {
-  const Points<2> points = Circle{Vec<2>(0, 0), 1.0}.sample(3000);
-  ReconstructionOptions o;
-  o.limits.solve_tiles = 3;
-  ReconstructionResult<2> one_r;
-  StageClock clock(one_r.seconds, one_r.stages);
-  const SampledData<2> sampled = sampled_data<2>(points, o, HeightFieldsAt::none, Progress(), one_r, clock);
-  const TiledFront<2> one = solve_in_tiles<2>(sampled, o, 0.0, 20'000'000, nullptr, one_r, Progress(), clock);
+  CircleInNineTiles c;
+  const ReconstructionOptions& o = c.o;
+  const SampledData<2>& sampled = c.sampled;
+  const ReconstructionResult<2>& one_r = c.r;
+  const TiledFront<2> one = solve_in_tiles<2>(sampled, o, 0.0, 20'000'000, nullptr, c.r, Progress(), c.clock);
   ThreadExchange::Meeting meeting(3);
   std::vector<TiledFront<2>> fronts(3);
   std::vector<ReconstructionResult<2>> results(3);
