@@ -75,8 +75,9 @@ void surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptions& o
   }
 }
 
-// 4-9 in tiles (tiles/tiled_solve.h): the welded front at the level through the data; with the
-// fit, its vertices projected onto it.
+// 4-9 in tiles (tiles/tiled_solve.h): the tiles' fields welded (each tile's fitted field, or
+// its front at the level through the data), the pieces no sample supports dropped; with the
+// fit, the vertices projected onto the whole sample's fit.
 template <int D>
 void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
                       const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
