@@ -108,6 +108,25 @@ TEST(AdaptiveRefinement, RefusesAMeshThatWouldNotFitAndNamesAFeasibleResolution)
   EXPECT_LE(Index(m.mesh.vertices.size()), o.max_vertices);
 }
 
+// A tile's mesh: fine where its points' sizes are fine (a cap of a quarter of the sphere's
+// area), at 1/64 elsewhere. Its size is predicted from the surface still refined, so it fits a
+// limit the whole sphere's mesh exceeds (predicted from the whole surface, it was refused:
+// its first passes are the whole mesh's); one vertex less than it needs is refused, whatever the
+// prediction (the count is checked after every pass).
+TEST(AdaptiveRefinement, AMeshFineOnPartOfTheDataFitsALimitTheWholeMeshExceeds) {
+  AdaptiveMeshOptions o;
+  o.h_min = 1.0 / 256;
+  const Index whole = Index(sphere_mesh(o.h_min).mesh.vertices.size());
+  o.max_vertices = whole - 1;
+  EXPECT_THROW(build_adaptive_mesh(sphere_data(), o), MeshTooLarge);
+  o.point_size.resize(sphere_data().points().size());
+  for (std::size_t i = 0; i < o.point_size.size(); ++i) o.point_size[i] = sphere_data().points()[i].x() < 0.35 ? 0.0 : 1.0 / 64;
+  const Index part = Index(build_adaptive_mesh(sphere_data(), o).mesh.vertices.size());
+  EXPECT_LT(2 * part, whole);
+  o.max_vertices = part - 1;
+  EXPECT_THROW(build_adaptive_mesh(sphere_data(), o), MeshTooLarge);
+}
+
 TEST(AdaptiveRefinement, RefusesAbsurdResolutionsQuickly) {
   AdaptiveMeshOptions o;
   o.h_min = 1e-7;  // 10^14 cells on the sphere: refused from the first passes, nothing allocated

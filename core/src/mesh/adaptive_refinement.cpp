@@ -294,7 +294,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   predicted.h_min = typical_size(o);
   const double resolution = 1.0 / predicted.h_min;
   const double limit = double(o.max_vertices);
-  const double lower_bound = occupied_cells<D>(data.points(), predicted.h_min);
+  const double lower_bound = occupied_cells<D>(data.points(), o.point_size, predicted.h_min);
   if (lower_bound > limit) {
     throw MeshTooLarge("a mesh at resolution " + std::to_string(int(resolution)) + " needs over " +
                            std::to_string(std::int64_t(lower_bound)) + " vertices (limit " +
@@ -324,6 +324,9 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
       o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));
   // 4 typical sizes: measured on the 200k torus, 2, 3 and 8 certify fewer of the last pass's marks.
   const NearbyLargestSize<D> nearby(data.points(), o.point_size, o.h_min, 4.0 * predicted.h_min, o.threads);
+  const RefiningPoints refining(o);
+  PassHistory history;
+  history.vertices.push_back(double(forest.vertices().size()));
   while (!cand.nodes.empty()) {
     progress.update("mesh", std::min(1.0, passes / expected_passes));
     // A simplex is marked when a point is near (within its radius + size / grading) and its size
@@ -348,7 +351,6 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     }
     data.query_within(searched, bound, dist, nearest, o.threads);
     const Index first_new = Index(forest.simplices().size());
-    const Index vertices_before = Index(forest.vertices().size());
     double largest_marked = 0.0;
     std::vector<Index> marked;
     for (std::size_t i = 0, q = 0; i < nc; ++i) {
@@ -377,10 +379,10 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     refine_marked(forest, marked, witness, o.threads);
     ++passes;
 
-    const double finest_next = largest_marked / std::pow(2.0, 1.0 / D);
-    check_predicted_size<D>(double(forest.vertices().size()),
-                            double(forest.vertices().size()) - vertices_before, finest_next, predicted);
-    reserve_predicted(forest, first_new, finest_next, predicted.h_min);
+    history.vertices.push_back(double(forest.vertices().size()));
+    history.bisected.push_back(largest_marked);
+    check_predicted_size<D>(history, predicted, refining);
+    reserve_predicted(forest, first_new, history, predicted.h_min, refining);
     leaves_from(forest, first_new, o.h_min, o.threads, cand);
   }
   AdaptiveMesh<D> out = leaf_mesh(std::move(forest));
