@@ -130,7 +130,8 @@ Cli parse(int argc, char** argv) {
               "lsrecon-mpi shares them among its ranks): less memory at once, the same result; 0 = one")
       .number("solve-tiles", "K", s.limits.solve_tiles, 1, 64,
               "experimental: solve the front in K x K x K tiles, one mesh at a time, welded at the seams (less "
-              "memory at once): one mesh's topology on random samples, not yet on scans; no --volume-mesh or "
+              "memory at once, a memory limit per tile): one mesh's topology on random samples and most scans, not yet "
+              "everywhere on unseen undersides; no --volume-mesh or "
               "--anisotropic; 1 = one mesh")
       .number("max-memory", "GIB", s.limits.max_memory / double(1 << 30), 0, 1e5, false,
               "refuse clouds and meshes predicted to need more; 0 = half the machine's memory",
