@@ -22,8 +22,8 @@
 
 namespace lsr::demos {
 
-const std::vector<std::string> kMethods = {"lsrecon",       "lsrecon-anisotropic", "poisson8", "poisson8-mt", "poisson9",
-                                          "poisson8-lsrecon", "poisson8-true",    "mc-hoppe", "mc-rbf",      "gp3"};
+const std::vector<std::string> kMethods = {"lsrecon",  "lsrecon-anisotropic", "lsrecon-tiles", "poisson8", "poisson8-mt",
+                                          "poisson9", "poisson8-lsrecon",    "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
 
 namespace {
 
@@ -107,13 +107,13 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
   Produced out;
   pcl::PointCloud<pcl::PointXYZ>::Ptr xyz(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : c.points) xyz->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
-  if (method == "lsrecon" || method == "lsrecon-anisotropic" || method == "poisson8-lsrecon") {
+  if (method.rfind("lsrecon", 0) == 0 || method == "poisson8-lsrecon") {
     pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
     ls.setInputCloud(xyz);
     lsr::ReconstructionOptions options;
     options.sampling.hole_radius = s.hole_radius;
     options.mesh.max_resolution = s.max_resolution;
-    options.limits.solve_tiles = s.solve_tiles;
+    options.limits.solve_tiles = method == "lsrecon-tiles" ? std::max(2, s.solve_tiles) : s.solve_tiles;
     options.mesh.anisotropic = method == "lsrecon-anisotropic";
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
@@ -127,6 +127,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
                std::to_string(ls.getStatus().mesh_vertices) + " mesh vertices;" + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
+    out.indexed = true;
     if (method != "poisson8-lsrecon") return out;
     // Poisson given lsrecon's oriented normals of the input points.
     Cloud::Ptr cloud(new Cloud);
@@ -136,6 +137,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     poisson.setInputCloud(cloud);
     out.mesh = pcl::PolygonMesh();
     poisson.reconstruct(out.mesh);
+    out.indexed = false;
     out.note = "lsrecon's normals (" + out.note + ")";
     out.residuals.clear();
     return out;

@@ -2,7 +2,8 @@
 /// @file compare_methods.h
 /// @brief The reconstructors lsrecon-compare runs on a case: lsrecon (the PCL class), and PCL's
 /// Poisson (with estimated, lsrecon's or the true normals), marching cubes (Hoppe, RBF) and
-/// greedy projection, normal estimation included where a method needs normals.
+/// greedy projection, normal estimation included where a method needs normals; lsrecon-tiles is
+/// lsrecon with its front in tiles (--solve-tiles, at least 2).
 #pragma once
 
 #include "compare_cases.h"
@@ -28,6 +29,7 @@ struct Produced {
   pcl::PolygonMesh mesh;
   std::string note;
   std::vector<double> residuals;  // lsrecon only
+  bool indexed = false;           // lsrecon's: its triangles share their vertices (PCL's are welded)
 };
 
 /// @brief Runs `method` on the case's points.

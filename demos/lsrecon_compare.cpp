@@ -41,6 +41,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -126,18 +127,22 @@ lsr::demos::CompareCase file_case(const std::string& path) {
 }
 
 // PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
-// weld positions within 1e-7 of the diagonal (float precision) so topology can be judged.
-void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
+// weld positions within `tolerance` so topology can be judged. lsrecon's meshes are indexed,
+// and are not welded (tolerance 0): where its surface has two sides on one sheet of data they
+// may lie closer than any tolerance meant for rounding.
+void weld(const pcl::PolygonMesh& mesh, double tolerance, lsr::Points<3>& vertices,
           std::vector<std::array<lsr::Index, 3>>& triangles) {
   lsr::Points<3> raw;
   std::vector<std::array<lsr::Index, 3>> soup;
   lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
   // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
   // rounding to cells it never separates two copies that straddle a cell boundary.
-  const double tolerance = 1e-6 * diagonal;
   std::vector<lsr::Index> remap(raw.size(), -1);
   vertices.clear();
-  if (!raw.empty()) {
+  if (tolerance == 0.0) {
+    vertices = raw;
+    std::iota(remap.begin(), remap.end(), lsr::Index(0));
+  } else if (!raw.empty()) {
     const lsr::NearestPointIndex<3> index(raw);
     std::vector<lsr::Index> near;
     for (std::size_t i = 0; i < raw.size(); ++i) {
@@ -173,7 +178,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   const double memory = lsr::demos::peak_memory_mib();
   lsr::Points<3> vertices;
   std::vector<std::array<lsr::Index, 3>> triangles;
-  weld(p.mesh, c.diagonal, vertices, triangles);
+  weld(p.mesh, p.indexed ? 0.0 : 1e-6 * c.diagonal, vertices, triangles);
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
                                         : lsr::SurfaceDistances{};
@@ -248,32 +253,46 @@ std::string median_run(std::vector<std::string> runs) {
 }
 
 // lsrecon / poisson8 (PCL normal estimation + Poisson depth 8, as PCL ships it: one thread) and
-// lsrecon / poisson8-mt (the same on every core) per case, where they ran.
+// lsrecon / poisson8-mt (the same on every core) per case, where they ran; lsrecon-tiles /
+// lsrecon (its front in tiles against one mesh) with the Chamfer distances' ratio too.
 void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
-  std::map<std::string, std::map<std::string, std::pair<double, double>>> figures;  // case -> method -> (s, MiB)
+  struct Figures {
+    double seconds, mib, chamfer;
+  };
+  std::map<std::string, std::map<std::string, Figures>> figures;  // case -> method
   for (const auto& row : rows) {
     std::stringstream in(row);
-    std::string name, method, points, seconds, memory;
+    std::string name, method, points, seconds, memory, chamfer;
     std::getline(in, name, ',');
     std::getline(in, method, ',');
     std::getline(in, points, ',');
     std::getline(in, seconds, ',');
     std::getline(in, memory, ',');
-    if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str())};
+    std::getline(in, chamfer, ',');
+    const double c = chamfer.empty() || chamfer == "n/a" ? std::nan("") : std::atof(chamfer.c_str());
+    if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str()), c};
   }
-  for (const std::string baseline : {"poisson8", "poisson8-mt"}) {
+  for (const std::string compared : {"poisson8", "poisson8-mt", "lsrecon-tiles"}) {
+    const bool tiles = compared == "lsrecon-tiles";
+    const std::string a_name = tiles ? compared : "lsrecon", b_name = tiles ? "lsrecon" : compared;
     bool header = false;
     for (const auto& [name, methods] : figures) {
-      if (!methods.count("lsrecon") || !methods.count(baseline)) continue;
+      if (!methods.count(a_name) || !methods.count(b_name)) continue;
       if (!header) {
-        md << "\n| case | time lsrecon / " << baseline << " | peak memory lsrecon / " << baseline << " |\n|---|--:|--:|\n";
+        const std::string r = " " + a_name + " / " + b_name + " |";
+        md << "\n| case | time" << r << " peak memory" << r << (tiles ? " Chamfer" + r + "\n|---|--:|--:|--:|\n" : "\n|---|--:|--:|\n");
         header = true;
       }
-      const auto& a = methods.at("lsrecon");
-      const auto& b = methods.at(baseline);
-      char line[128];
-      std::snprintf(line, sizeof line, "| %s | %.2f | %.2f |\n", name.c_str(), a.first / b.first, a.second / b.second);
+      const Figures& a = methods.at(a_name);
+      const Figures& b = methods.at(b_name);
+      char line[160];
+      std::snprintf(line, sizeof line, "| %s | %.2f | %.2f |", name.c_str(), a.seconds / b.seconds, a.mib / b.mib);
       md << line;
+      if (tiles) {
+        std::snprintf(line, sizeof line, " %.3f |", a.chamfer / b.chamfer);
+        md << (std::isnan(a.chamfer / b.chamfer) ? std::string(" n/a |") : std::string(line));
+      }
+      md << "\n";
     }
   }
 }
