@@ -127,8 +127,10 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
                std::to_string(ls.getStatus().mesh_vertices) + " mesh vertices;" + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
-    out.indexed = true;
-    if (method != "poisson8-lsrecon") return out;
+    if (method != "poisson8-lsrecon") {
+      out.indexed = true;
+      return out;
+    }
     // Poisson given lsrecon's oriented normals of the input points.
     Cloud::Ptr cloud(new Cloud);
     pcl::concatenateFields(*xyz, ls.getInputNormals(), *cloud);
@@ -137,7 +139,6 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     poisson.setInputCloud(cloud);
     out.mesh = pcl::PolygonMesh();
     poisson.reconstruct(out.mesh);
-    out.indexed = false;
     out.note = "lsrecon's normals (" + out.note + ")";
     out.residuals.clear();
     return out;
