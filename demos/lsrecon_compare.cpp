@@ -41,7 +41,6 @@
 #include <fstream>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -127,22 +126,20 @@ lsr::demos::CompareCase file_case(const std::string& path) {
 }
 
 // PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
-// weld positions within `tolerance` so topology can be judged. lsrecon's meshes are indexed,
-// and are not welded (tolerance 0): where its surface has two sides on one sheet of data they
-// may lie closer than any tolerance meant for rounding.
-void weld(const pcl::PolygonMesh& mesh, double tolerance, lsr::Points<3>& vertices,
+// weld positions within 1e-6 of the diagonal so topology can be judged. lsrecon's meshes are
+// indexed and taken as written: where its surface has two sides on one sheet of data they may
+// lie closer than any tolerance meant for rounding.
+void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
           std::vector<std::array<lsr::Index, 3>>& triangles) {
   lsr::Points<3> raw;
   std::vector<std::array<lsr::Index, 3>> soup;
   lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
   // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
   // rounding to cells it never separates two copies that straddle a cell boundary.
+  const double tolerance = 1e-6 * diagonal;
   std::vector<lsr::Index> remap(raw.size(), -1);
   vertices.clear();
-  if (tolerance == 0.0) {
-    vertices = raw;
-    std::iota(remap.begin(), remap.end(), lsr::Index(0));
-  } else if (!raw.empty()) {
+  if (!raw.empty()) {
     const lsr::NearestPointIndex<3> index(raw);
     std::vector<lsr::Index> near;
     for (std::size_t i = 0; i < raw.size(); ++i) {
@@ -178,7 +175,11 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   const double memory = lsr::demos::peak_memory_mib();
   lsr::Points<3> vertices;
   std::vector<std::array<lsr::Index, 3>> triangles;
-  weld(p.mesh, p.indexed ? 0.0 : 1e-6 * c.diagonal, vertices, triangles);
+  if (p.indexed) {
+    lsr::adapters::triangles_from_polygon_mesh(p.mesh, vertices, triangles);
+  } else {
+    weld(p.mesh, c.diagonal, vertices, triangles);
+  }
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
                                         : lsr::SurfaceDistances{};
