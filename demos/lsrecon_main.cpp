@@ -5,6 +5,7 @@
 /// report, outputs written atomically, non-zero exit with a message that says what to change.
 #include "cli_options.h"
 #include "geometry/facet_mesh_distance.h"
+#include "geometry/self_intersections.h"
 #include "lsrecon/adapters/curve_files.h"
 #include "lsrecon/adapters/image_points.h"
 #ifdef LSRECON_MPI
@@ -341,9 +342,10 @@ int run(const Cli& c) {
         lsr::adapters::write_polylines(output, r.surface.vertices, r.loops);
       }
       times.emplace_back("write", timer.lap());
-      return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true,
+      const std::size_t crossings = lsr::detail::count_self_intersections(r.surface.vertices, r.surface.facets, c.solver.limits.threads);
+      return Outcome{r.surface.vertices.size(), r.surface.facets.size(), r.loops.size(), int(r.loops.size()), true, crossings,
                      std::to_string(r.loops.size()) + " closed curve(s), " + std::to_string(r.surface.vertices.size()) +
-                         " vertices",
+                         " vertices, " + (crossings == 0 ? "simple" : std::to_string(crossings) + " crossing pairs of segments"),
                      {}};
     };
     return solve_and_write<2>(c, in, xy, stages, total, files, write);
@@ -358,9 +360,11 @@ int run(const Cli& c) {
     times.emplace_back("write", timer.lap());
     const lsr::LevelSetMesh<3> written = lsr::adapters::from_openmesh(mesh);
     const lsr::SurfaceTopology t = lsr::analyze_surface(written.vertices, written.facets);
-    return Outcome{written.vertices.size(), written.facets.size(), 0, t.components, t.watertight,
-                   std::to_string(written.facets.size()) + " triangles, " + std::to_string(t.components) +
-                       " component(s), " + (t.watertight ? "watertight" : "NOT watertight"),
+    const std::size_t crossings = lsr::detail::count_self_intersections(written.vertices, written.facets, c.solver.limits.threads);
+    return Outcome{written.vertices.size(), written.facets.size(), 0, t.components, t.watertight, crossings,
+                   std::to_string(written.facets.size()) + " triangles, " + std::to_string(t.components) + " component(s), " +
+                       (t.watertight ? "watertight" : "NOT watertight") + ", " +
+                       (crossings == 0 ? "embedded" : std::to_string(crossings) + " intersecting pairs of triangles"),
                    {}};
   };
   return solve_and_write<3>(c, in, in.points, stages, total, files, write);

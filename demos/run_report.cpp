@@ -90,7 +90,9 @@ void write_report(const Cli& c, const Input& in, const lsr::ReconstructionResult
                  {"output_vertices", out.vertices},
                  {D == 2 ? "curves" : "output_faces", D == 2 ? out.curves : out.faces},
                  {"components", out.components},
-                 {"watertight", out.watertight}};
+                 {"watertight", out.watertight},
+                 {"embedded", out.intersecting_pairs == 0},
+                 {"intersecting_pairs", out.intersecting_pairs}};
   if (!c.volume_mesh.empty()) {
     const lsr::VolumeMeshQuality& q = out.volume;
     report["volume_mesh"] = {{"file", c.volume_mesh},

@@ -29,6 +29,7 @@ struct Outcome {
   std::size_t vertices = 0, faces = 0, curves = 0;
   int components = 0;
   bool watertight = false;
+  std::size_t intersecting_pairs = 0;  ///< pairs of facets that intersect (exact): 0 when embedded
   std::string summary;  ///< e.g. "3 closed curve(s), 812 vertices"
   lsr::VolumeMeshQuality volume;  ///< with --volume-mesh
 };

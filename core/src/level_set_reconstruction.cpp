@@ -17,6 +17,7 @@
 #include "sampling/sampled_data.h"
 #include "stage_clock.h"
 #include "surface/closed_surface.h"
+#include "surface/embedded_moves.h"
 #include "surface/facet_normals.h"
 #include "surface/unsupported_parts.h"
 #include "tiles/tiled_solve.h"
@@ -26,9 +27,9 @@ namespace {
 
 using namespace detail;
 
-// 4-9 on one mesh.
+// 4-9 on one mesh. Returns the surface's vertices as extracted (embedded): the fit moves them.
 template <int D>
-void surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+Points<D> surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
                          const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
   const DataPoints<D>& in = sampled.in;
   const UnitBoxTransform<D>& box = sampled.box;
@@ -64,31 +65,33 @@ void surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptions& o
     if (!front.best_is_distance) renormalize(mesh, front.neighbours, best, front.band, o.limits.threads);
     front.ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
-    attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole, front.near_opening, data,
-               normals, o.output.volume_mesh, o.limits.threads);
-    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, o.limits.threads);
+    Points<D> extracted = attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole,
+                                     front.near_opening, data, normals, o.output.volume_mesh, o.limits.threads);
+    if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, extracted, o.limits.threads);
     clock.end("fit");
-  } else {
-    r.output_level = o.output.level_through_data ? median_on_data(front.at, best) / box.scale() : 0.0;
-    attach_front(r, mesh, front.ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
-    clock.end("extract");
+    return extracted;
   }
+  r.output_level = o.output.level_through_data ? median_on_data(front.at, best) / box.scale() : 0.0;
+  attach_front(r, mesh, front.ops, best, r.output_level * box.scale(), data.points(), o.output.volume_mesh, o.limits.threads);
+  clock.end("extract");
+  return r.surface.vertices;
 }
 
 // 4-9 in tiles (tiles/tiled_solve.h): the tiles' fields welded (each tile's fitted field, or
 // its front at the level through the data), the pieces no sample supports dropped; with the
-// fit, the vertices projected onto the whole sample's fit.
+// fit, the vertices projected onto the whole sample's fit. Returns the vertices as welded.
 template <int D>
-void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
+Points<D> surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, double hole_radius, Index max_vertices,
                       const SignedDistance<D>* custom_start, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock) {
   // Each point's scale raised to its mesh size, as one mesh does (data_mesh.h).
   const std::vector<double> size = local_mesh_sizes<D>(sampled.point_scale, o.mesh.h_min, o.mesh.max_resolution);
   for (std::size_t i = 0; i < size.size(); ++i) sampled.point_scale[i] = std::max(sampled.point_scale[i], size[i]);
   TiledFront<D> tiled = solve_in_tiles(sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
-  if (r.status == ReconstructionStatus::cancelled || r.status == ReconstructionStatus::shared) return;  // or another worker's
+  if (r.status == ReconstructionStatus::cancelled || r.status == ReconstructionStatus::shared) return {};  // or another worker's
   if (!sampled.in.kept.empty()) r.point_normals = sampled.in.input_normals(every_point_normals(sampled.left_out, tiled.normals), r.input_points);
   r.surface = std::move(tiled.surface);
   drop_unsupported_pieces(r.surface, sampled.data.points(), o.limits.threads);
+  const Points<D> welded = r.surface.vertices;
   if (o.output.fit_surface) {
     progress.update("fit", -1.0);
     const QuadricImplicit<D> fit = fit_quadrics(sampled.data, tiled.normals, sampled.point_scale, o.limits.threads, progress);
@@ -104,6 +107,7 @@ void surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions& o, d
     r.normals.assign(r.surface.vertices.size(), Vec<D>::Zero());
     set_facet_normals(r.surface, std::vector<char>(r.surface.vertices.size(), 1), r.normals);
   }
+  return welded;
 }
 
 template <int D>
@@ -152,15 +156,22 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // 4-9. The mesh, the front on it and the surface; or the same in tiles.
   const Index max_vertices =
       o.limits.max_vertices > 0 ? o.limits.max_vertices : memory_limited_vertices<D>(o, input.size(), sampled->data.points().size());
-  if (o.limits.solve_tiles > 1) {
-    surface_in_tiles(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
-  } else {
-    surface_on_one_mesh(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
-  }
+  Points<D> embedded = o.limits.solve_tiles > 1 ? surface_in_tiles(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock)
+                                                 : surface_on_one_mesh(*sampled, o, hole_radius, max_vertices, custom_start, r, progress, clock);
 
   // 10. Back to the input's coordinates.
   for (auto& x : r.surface.vertices) x = box.from_unit(x);
+  for (auto& x : embedded) x = box.from_unit(x);
   for (auto& x : r.volume.vertices) x = box.from_unit(x);
+
+  // 11. The moves since the extraction kept embedded, as written: on floats where rounding to
+  // them moves vertices less than the extraction places them.
+  const bool float_grid = float_grid_is_finer(r.surface.vertices, kOutputEdgeMargin * r.h_min / box.scale());
+  keep_embedded(r.surface, std::move(embedded), float_grid, r.normals, o.limits.threads);
+  for (std::size_t i = 0; i < r.surface.vertices.size() && !r.volume.vertices.empty(); ++i) {
+    r.volume.vertices[std::size_t(r.volume.interface_offset) + i] = r.surface.vertices[i];
+  }
+  clock.end("embed");
   if constexpr (D == 2) r.loops = closed_loops(r.surface);
   return r;
 }

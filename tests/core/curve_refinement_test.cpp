@@ -3,6 +3,7 @@
 /// @brief Long segments of a closed curve split and projected onto the fit: a polygon's chords
 /// on a circle become a polygon as fine as asked, on the circle to the fit's accuracy; a fine
 /// polygon is left alone.
+#include "checks/exact_self_intersections.h"
 #include "fit/curve_refinement.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 
@@ -36,7 +37,10 @@ TEST(CurveRefinement, LongChordsBecomeFineAndLieOnTheFit) {
   const double length = 0.01;
   LevelSetMesh<2> curve = polygon(c, 24);  // sides 0.078
   Points<2> curve_normals(curve.vertices.size(), Vec<2>::Zero());
-  refine_long_segments(curve, curve_normals, fit, [&](std::size_t) { return length; }, 1);
+  Points<2> polygon_points = curve.vertices;  // subdivided alongside
+  refine_long_segments(curve, curve_normals, fit, [&](std::size_t) { return length; }, polygon_points, 1);
+  EXPECT_EQ(polygon_points.size(), curve.vertices.size());
+  EXPECT_EQ(testing::cgal_self_intersections(polygon_points, curve.facets), 0u);
   // ceil(0.078 / 0.01) = 8 parts a side.
   EXPECT_EQ(curve.vertices.size(), 24u * 8u);
   EXPECT_EQ(curve.facets.size(), curve.vertices.size());
@@ -58,7 +62,8 @@ TEST(CurveRefinement, LongChordsBecomeFineAndLieOnTheFit) {
   // As fine as asked already: unchanged.
   LevelSetMesh<2> fine = polygon(c, 400);  // sides 4.7e-3
   Points<2> fine_normals(fine.vertices.size(), Vec<2>::Zero());
-  refine_long_segments(fine, fine_normals, fit, [&](std::size_t) { return length; }, 1);
+  Points<2> fine_points = fine.vertices;
+  refine_long_segments(fine, fine_normals, fit, [&](std::size_t) { return length; }, fine_points, 1);
   EXPECT_EQ(fine.vertices.size(), 400u);
 }
 

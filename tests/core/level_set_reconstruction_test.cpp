@@ -8,6 +8,7 @@
 /// through the data then places the surface closer, and the data lie on the true shape; so
 /// the two-sided distance to the truth is below 2 eps, plus the truth's own sampling where it
 /// is measured on samples.
+#include "checks/exact_self_intersections.h"
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
@@ -45,6 +46,7 @@ TEST(LevelSetReconstruction, ConcaveStarConvergesToOneCurveWithinTwoHmin) {
   const auto r = reconstruct<2>(data);
   EXPECT_EQ(r.status, ReconstructionStatus::converged);
   ASSERT_EQ(r.loops.size(), 1u);
+  EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u);  // simple
   const double h = r.tolerance;  // h_min in input units
   const NearestPointIndex<2> truth_index(truth);
   EXPECT_LE(max_distance(r.surface.vertices, truth_index), 2 * h);
@@ -113,6 +115,7 @@ TEST(LevelSetReconstruction, NoisyCircleGivesOneSmoothCurveWithErrorOfTheNoise) 
   }
   const auto r = reconstruct<2>(noisy);
   ASSERT_EQ(r.loops.size(), 1u);
+  EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u);  // simple
   double mean = 0.0;
   for (const auto& v : r.surface.vertices) mean += std::abs(v.norm() - 1.0);
   mean /= double(r.surface.vertices.size());
@@ -180,6 +183,7 @@ void expect_closed_surface(const ReconstructionResult<3>& r, int components, std
   std::sort(g.begin(), g.end());
   EXPECT_EQ(g, genus);
   EXPECT_GT(t.signed_volume, 0.0);
+  EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u);  // embedded
   // Normals from grad u point outwards: along the outward facet normals.
   double agreement = 0.0;
   for (const auto& f : r.surface.facets) {

@@ -3,6 +3,7 @@
 /// @brief Test helpers: conformity and shape checks of simplicial meshes of the unit box.
 #pragma once
 
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/core/level_set_extraction.h"
 #include "lsrecon/core/simplex_geometry.h"
 #include "mesh/adaptive_refinement.h"
@@ -91,6 +92,7 @@ inline void expect_closed_surface(const LevelSetMesh<3>& s, int components, std:
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(sorted, genus);
   EXPECT_GT(t.signed_volume, 0.0);  // outward normals: towards u > 0
+  EXPECT_EQ(cgal_self_intersections(s.vertices, s.facets), 0u);  // embedded
 }
 
 }  // namespace lsr::testing

@@ -7,6 +7,7 @@
 /// surface of curvature radius R is the quartic term of the height function over a fit's
 /// reach, (2 r)^4 / (8 R^3) with pi r^2 rho = 30 (quadric_implicit_test.cpp); facets of size up
 /// to twice the local scale s add their sagitta (2 s)^2 / (8 R) between vertices.
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/shape_corpus.h"
 #include "lsrecon/testdata/surface_distance.h"
@@ -42,6 +43,7 @@ Outcome run(const TestShape& shape, const SampledShape& sample, const Reconstruc
   Outcome o;
   o.r = reconstruct<3>(sample.points, options);
   o.topology = analyze_surface(o.r.surface.vertices, o.r.surface.facets);
+  EXPECT_EQ(testing::cgal_self_intersections(o.r.surface.vertices, o.r.surface.facets), 0u);  // embedded
   Points<3> truth, truth_normals;
   sample_shape_surface(shape, 20000, 3, truth, truth_normals);
   o.distances = compare_to_truth(o.r.surface.vertices, o.r.surface.facets, shape.sdf, truth, 20000);
@@ -89,6 +91,7 @@ TEST(RandomReconstruction, RandomSamplesOfACircleGiveOneCurve) {
     const ReconstructionResult<2> r = reconstruct<2>(p);
     EXPECT_EQ(r.status, ReconstructionStatus::converged) << n;
     EXPECT_EQ(r.loops.size(), 1u) << n;
+    EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u) << n;  // simple
     EXPECT_EQ(r.outlier_points, 0u) << n;  // genuine samples are never isolated
     double worst = 0.0;
     for (const auto& v : r.surface.vertices) worst = std::max(worst, std::abs(v.norm() - 1.0));

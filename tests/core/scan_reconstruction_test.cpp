@@ -3,6 +3,7 @@
 /// @brief Simulated line scans (testdata/simulated_scan.h) reconstruct with the right topology:
 /// dense lines with wide gaps between them, range noise and misregistered views, from all sides
 /// and from above only (the underside unseen, closed by the front).
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/simulated_scan.h"
 #include "surface/surface_topology.h"
@@ -26,6 +27,7 @@ ScannerSettings test_scanner(bool from_above) {
 SurfaceTopology scan_topology(const std::string& shape, const ScannerSettings& settings, std::uint64_t seed = 2011) {
   const SampledShape scan = simulate_scan(make_test_shape(shape), settings, seed);
   const ReconstructionResult<3> r = reconstruct<3>(scan.points);
+  EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u) << shape;  // embedded
   return analyze_surface(r.surface.vertices, r.surface.facets);
 }
 

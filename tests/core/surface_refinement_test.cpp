@@ -3,6 +3,7 @@
 /// @brief Long edges of a closed surface bisected and projected onto the fit: an octahedron
 /// inscribed in a sphere becomes a closed, consistently oriented surface as fine as asked, on the
 /// sphere to the fit's accuracy; a fine enough surface is left alone.
+#include "checks/exact_self_intersections.h"
 #include "fit/surface_refinement.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 
@@ -56,9 +57,14 @@ TEST(SurfaceRefinement, LongEdgesBecomeFineAndLieOnTheFit) {
   LevelSetMesh<3> surface = octahedron(s);
   ASSERT_GT(enclosed_volume(surface, s.center), 0.0);
   Points<3> surface_normals(surface.vertices.size(), Vec<3>::Zero());
-  refine_long_edges(surface, surface_normals, fit, [&](std::size_t) { return length; }, 1);
+  Points<3> flat = surface.vertices;  // the octahedron, subdivided alongside
+  refine_long_edges(surface, surface_normals, fit, [&](std::size_t) { return length; }, flat, 1);
   EXPECT_EQ(surface.sources.size(), surface.vertices.size());
   EXPECT_EQ(surface_normals.size(), surface.vertices.size());
+  // The reference is the octahedron subdivided: its vertices on its faces, no intersection.
+  ASSERT_EQ(flat.size(), surface.vertices.size());
+  for (const auto& p : flat) EXPECT_NEAR((p - s.center).lpNorm<1>(), s.radius, 1e-12);
+  EXPECT_EQ(testing::cgal_self_intersections(flat, surface.facets), 0u);
   // Closed and consistently oriented: every directed edge once, its reverse once.
   std::map<std::pair<Index, Index>, int> directed;
   for (const auto& f : surface.facets) {
@@ -85,7 +91,7 @@ TEST(SurfaceRefinement, LongEdgesBecomeFineAndLieOnTheFit) {
   EXPECT_GT(enclosed_volume(surface, s.center), 4.0 / 3.0 * kPi * std::pow(s.radius - 6.7e-4, 3));
   // As fine as asked already: unchanged.
   const std::size_t vertices = surface.vertices.size();
-  refine_long_edges(surface, surface_normals, fit, [&](std::size_t) { return length; }, 1);
+  refine_long_edges(surface, surface_normals, fit, [&](std::size_t) { return length; }, flat, 1);
   EXPECT_EQ(surface.vertices.size(), vertices);
 }
 

@@ -3,6 +3,7 @@
 /// @brief The front solved in tiles (LimitOptions::solve_tiles) against one mesh on the same
 /// clouds: one closed manifold surface of the same topology across the seams, as near the
 /// truth, and no tile's mesh as large as the whole one.
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
@@ -22,6 +23,7 @@ namespace {
 void expect_same_topology(const ReconstructionResult<3>& r, const std::vector<int>& genus) {
   const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
   EXPECT_TRUE(t.watertight && t.edge_manifold && t.vertex_manifold && t.oriented);
+  EXPECT_EQ(testing::cgal_self_intersections(r.surface.vertices, r.surface.facets), 0u);  // embedded
   EXPECT_GT(t.signed_volume, 0.0);
   std::vector<int> g = t.genus;
   std::sort(g.begin(), g.end());

@@ -3,6 +3,7 @@
 /// @brief Runs the lsrecon command line in a scratch directory, as a user would.
 #pragma once
 
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/adapters/openmesh_mesh.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "surface/surface_topology.h"
@@ -78,6 +79,7 @@ inline void expect_closed_mesh(const std::string& file, int genus = 0) {
   EXPECT_TRUE(t.watertight) << file;
   EXPECT_EQ(t.components, 1) << file;
   EXPECT_EQ(t.genus, std::vector<int>{genus}) << file;
+  EXPECT_EQ(lsr::testing::cgal_self_intersections(m.vertices, m.facets), 0u) << file;  // embedded, as written
 }
 
 }  // namespace lsr_test

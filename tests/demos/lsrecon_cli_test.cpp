@@ -71,10 +71,12 @@ TEST_F(Cli, WritesEveryMeshFormatAndTheReport) {
   for (const char* field : {"input_points", "dimension", "h_min_unit_box", "mesh_vertices", "mesh_simplices", "time_steps",
                             "status", "converged", "residual_input_units", "tolerance_input_units", "stage_seconds",
                             "total_seconds", "peak_memory_mib", "output_vertices", "output_faces", "components",
-                            "watertight", "scan_lines", "options"}) {
+                            "watertight", "embedded", "intersecting_pairs", "scan_lines", "options"}) {
     EXPECT_TRUE(j.contains(field)) << field;
   }
   EXPECT_TRUE(j["watertight"].get<bool>());
+  EXPECT_TRUE(j["embedded"].get<bool>());
+  EXPECT_EQ(j["intersecting_pairs"].get<std::size_t>(), 0u);
   EXPECT_FALSE(j["scan_lines"].get<bool>());  // random samples
   EXPECT_EQ(j["options"]["scan_lines"].get<std::string>(), "auto");
   EXPECT_EQ(j["options"]["resolution"].get<double>(), 32.0);

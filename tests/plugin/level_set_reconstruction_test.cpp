@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file level_set_reconstruction_test.cpp
 /// @brief pcl::LevelSetReconstruction used exactly like pcl::Poisson.
+#include "checks/exact_self_intersections.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
@@ -53,6 +54,7 @@ void check_torus() {
   EXPECT_TRUE(t.watertight && t.oriented && t.edge_manifold && t.vertex_manifold);
   EXPECT_EQ(t.components, 1);
   EXPECT_EQ(t.genus, std::vector<int>{1});
+  EXPECT_EQ(lsr::testing::cgal_self_intersections(vertices, triangles), 0u);  // embedded, in PCL's floats
   // Shared vertices with normals, not a triangle soup.
   EXPECT_LT(vertices.size(), 3 * triangles.size() / 2 + 1);
   pcl::PointCloud<pcl::PointNormal> normals;

@@ -7,7 +7,7 @@
 namespace lsr::detail {
 
 void refine_long_segments(LevelSetMesh<2>& curve, Points<2>& normals, const QuadricImplicit<2>& fit,
-                          const std::function<double(std::size_t vertex)>& length, int threads) {
+                          const std::function<double(std::size_t vertex)>& length, Points<2>& reference, int threads) {
   Points<2> added;
   std::vector<std::array<Index, 2>> facets;
   std::vector<EdgePoint> sources;
@@ -25,6 +25,8 @@ void refine_long_segments(LevelSetMesh<2>& curve, Points<2>& normals, const Quad
     for (int k = 1; k < parts; ++k) {
       const Index v = first_new + Index(added.size());
       added.push_back(a + (double(k) / parts) * (b - a));
+      const Vec<2>& ra = reference[std::size_t(f[0])];
+      reference.push_back(ra + (double(k) / parts) * (reference[std::size_t(f[1])] - ra));
       sources.push_back(curve.sources[std::size_t(f[0])]);
       facets.push_back({previous, v});
       previous = v;

@@ -17,7 +17,9 @@ namespace lsr::detail {
 /// longer than that, projects the new points onto `fit` and appends them (their sources are
 /// those of the segment's first vertex, their normals the fit's). An extraction from an
 /// isotropic mesh has no segment that long (at most sqrt(2) sizes), and is left as it is.
+/// `reference` (other positions of the curve's vertices, #vertices) gets the same new points on
+/// its own segments, unprojected: a subdivision, as embedded as the reference curve.
 void refine_long_segments(LevelSetMesh<2>& curve, Points<2>& normals, const QuadricImplicit<2>& fit,
-                          const std::function<double(std::size_t vertex)>& length, int threads);
+                          const std::function<double(std::size_t vertex)>& length, Points<2>& reference, int threads);
 
 }  // namespace lsr::detail

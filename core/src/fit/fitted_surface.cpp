@@ -103,7 +103,7 @@ void project_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit,
 }
 
 template <int D>
-void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+Points<D> attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
@@ -116,13 +116,15 @@ void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const Ve
     vertex_scale[i] = (1.0 - e.t) * scale[e.a] + e.t * scale[e.b];
     if (!f.fit_share.empty()) share.push_back((1.0 - e.t) * f.fit_share[std::size_t(e.a)] + e.t * f.fit_share[std::size_t(e.b)]);
   }
+  const Points<D> extracted = r.surface.vertices;
   project_onto_fit(r, fit, share, vertex_scale, data, threads);
   attach_volume(r, mesh, f.values, volume);
+  return extracted;
 }
 
 template <int D>
 void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
-                     int threads) {
+                     Points<D>& embedded, int threads) {
   // Facets longer than 2 l are split: in 3D, l = half a size gives fewer triangles than an
   // isotropic mesh's extraction and a smaller Chamfer distance (measured: the sphere, torus and
   // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance). Past
@@ -136,9 +138,9 @@ void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, 
     return share * (at(scale) + (past > 0.0 ? growth * past : 0.0));
   };
   if constexpr (D == 2) {
-    refine_long_segments(r.surface, r.normals, fit, length, threads);
+    refine_long_segments(r.surface, r.normals, fit, length, embedded, threads);
   } else {
-    refine_long_edges(r.surface, r.normals, fit, length, threads);
+    refine_long_edges(r.surface, r.normals, fit, length, embedded, threads);
   }
 }
 
@@ -154,21 +156,23 @@ QuadricImplicit<D> fit_quadrics(const NearestPointIndex<D>& data, const Points<D
 }
 
 template void project_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const std::vector<double>&, const std::vector<double>&,
-                                      const NearestPointIndex<2>&, int);
-template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
+                                  const NearestPointIndex<2>&, int);
+template void refine_onto_fit<2>(ReconstructionResult<2>&, const QuadricImplicit<2>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                 Points<2>&, int);
 template void project_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const std::vector<double>&, const std::vector<double>&,
-                                      const NearestPointIndex<3>&, int);
-template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&, int);
+                                  const NearestPointIndex<3>&, int);
+template void refine_onto_fit<3>(ReconstructionResult<3>&, const QuadricImplicit<3>&, const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                 Points<3>&, int);
 template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int,
                                             const Progress&);
 template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int,
                                             const Progress&);
-template void attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
+template Points<2> attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<2>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<2>& data, const Points<2>& normals,
                 bool volume, int threads);
-template void attach_fit<3>(ReconstructionResult<3>& r, const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours,
+template Points<3> attach_fit<3>(ReconstructionResult<3>& r, const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<3>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<3>& data, const Points<3>& normals,

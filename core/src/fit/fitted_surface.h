@@ -19,8 +19,9 @@ namespace lsr::detail {
 // the front (u is a signed distance there after renormalisation), u keeps the sign beyond, so
 // the front's topology decides everything the fit does not reach. Output vertices are then
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
+// Returns the surface's vertices as extracted: a level set, embedded (embedded_moves.h).
 template <int D>
-void attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
+Points<D> attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                 const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
                 const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
                 const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
@@ -36,10 +37,11 @@ void project_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit,
 /// @brief On an anisotropic mesh: the output's facets refined onto the fit as finely as an
 /// isotropic mesh would give them (curve_refinement.h, surface_refinement.h), to a share of the
 /// vertex scale (growing with the distance to the data) interpolated at each output vertex.
-/// Not with a volume mesh, whose boundary is the surface as extracted.
+/// Not with a volume mesh, whose boundary is the surface as extracted. `embedded` (the
+/// surface's vertices before the moves) is refined alongside, unprojected.
 template <int D>
 void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
-                     int threads);
+                     Points<D>& embedded, int threads);
 
 /// @brief The blended local quadrics through the data (unit box) with their oriented normals;
 /// the fits widen with the noise a quadric sees (residual_noise.h), not with the bend that

@@ -15,7 +15,7 @@ constexpr int kMaxPasses = 10;
 }  // namespace
 
 void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const QuadricImplicit<3>& fit,
-                       const std::function<double(std::size_t vertex)>& length, int threads) {
+                       const std::function<double(std::size_t vertex)>& length, Points<3>& reference, int threads) {
   std::vector<double> limit(surface.vertices.size());
   for (std::size_t v = 0; v < limit.size(); ++v) limit[v] = 2.0 * length(v);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
@@ -36,6 +36,7 @@ void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const Quadr
     for (std::size_t k = 0; k < long_edges.size(); ++k) {
       const auto [a, b] = long_edges[k];
       added[k] = 0.5 * (surface.vertices[std::size_t(a)] + surface.vertices[std::size_t(b)]);
+      reference.push_back(0.5 * (reference[std::size_t(a)] + reference[std::size_t(b)]));
       surface.sources.push_back(surface.sources[std::size_t(a)]);
       limit.push_back(std::min(limit[std::size_t(a)], limit[std::size_t(b)]));
     }

@@ -18,7 +18,9 @@ namespace lsr::detail {
 /// pass, projecting the midpoints onto `fit` (their sources are those of the edge's first end,
 /// their normals the fit's) unless that moves them by more than a quarter of the edge. The
 /// surface stays closed and consistently oriented.
+/// `reference` (other positions of the surface's vertices, #vertices) gets the same midpoints of
+/// its own edges, unprojected: a subdivision, as embedded as the reference surface.
 void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const QuadricImplicit<3>& fit,
-                       const std::function<double(std::size_t vertex)>& length, int threads);
+                       const std::function<double(std::size_t vertex)>& length, Points<3>& reference, int threads);
 
 }  // namespace lsr::detail
