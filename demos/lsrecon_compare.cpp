@@ -15,6 +15,7 @@
 #include "compare_cases.h"
 #include "compare_methods.h"
 #include "geometry/nearest_point_index.h"
+#include "geometry/self_intersections.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
@@ -165,7 +166,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
                                                                  s.scanner.views > 0 ? &s.scanner : nullptr)
                                         : file_case(s.input);
   if (method == "poisson8-true" && c.normals.empty()) {
-    std::printf("%s,%s,%zu,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
+    std::printf("%s,%s,%zu,,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
     return 0;
   }
   if (s.save_points && s.input.empty()) lsr::adapters::write_points(s.out + "/" + case_name + "-points.ply", c.points);
@@ -181,6 +182,10 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     weld(p.mesh, c.diagonal, vertices, triangles);
   }
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
+  // As saved (floats, below): the pairs of triangles that intersect, decided exactly.
+  lsr::Points<3> saved = vertices;
+  for (auto& v : saved) v = v.cast<float>().cast<double>();
+  const std::size_t intersecting = lsr::detail::count_self_intersections(saved, triangles, 0);
   const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
                                         : lsr::SurfaceDistances{};
   // The welded mesh, without normals (PCL's marching cubes emit all-zero normals, which
@@ -200,10 +205,10 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     std::snprintf(text, sizeof text, format, v);
     return c.sdf ? std::string(text) : std::string("n/a");
   };
-  std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
+  std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%zu,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
               c.points.size(), seconds, memory, metric(d.chamfer / c.diagonal, "%.3e").c_str(),
               metric(d.hausdorff / c.diagonal, "%.3e").c_str(), metric(d.normal_consistency, "%.3f").c_str(),
-              int(t.watertight), int(t.edge_manifold && t.vertex_manifold), t.components, genus.c_str(),
+              int(t.watertight), int(t.edge_manifold && t.vertex_manifold), intersecting, t.components, genus.c_str(),
               triangles.size(), p.note.c_str());
   return 0;
 }
@@ -225,7 +230,7 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   char buffer[4096];
   while (pipe && std::fgets(buffer, sizeof buffer, pipe)) row = buffer;
   const int status = pipe ? pclose(pipe) : -1;
-  if (status != 0 || row.empty()) return case_name + "," + method + ",,,,,,,,,,,,failed (exit " + std::to_string(status) + ")\n";
+  if (status != 0 || row.empty()) return case_name + "," + method + ",,,,,,,,,,,,,failed (exit " + std::to_string(status) + ")\n";
   return row;
 }
 
@@ -301,8 +306,8 @@ void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
 void write_markdown(const std::string& path, const std::vector<std::string>& rows, const Settings& s) {
   std::ofstream md(path);
   md << "| case | method | points | seconds | peak MiB | Chamfer / diag | Hausdorff / diag | normal consistency | "
-        "watertight | manifold | components | genus | triangles | note |\n"
-     << "|---|---|--:|--:|--:|--:|--:|--:|:-:|:-:|--:|--:|--:|---|\n";
+        "watertight | manifold | intersecting pairs | components | genus | triangles | note |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|:-:|:-:|--:|--:|--:|--:|---|\n";
   for (const auto& row : rows) {
     std::stringstream in(row);
     std::string cell;
@@ -415,7 +420,7 @@ int main(int argc, char** argv) {
     }
     std::ofstream csv(s.out + "/results.csv");
     csv << "case,method,points,seconds,peak_mib,chamfer_rel,hausdorff_rel,normal_consistency,watertight,manifold,"
-           "components,genus,triangles,note\n";
+           "intersecting_pairs,components,genus,triangles,note\n";
     for (const auto& r : rows) csv << r;
     write_markdown(s.out + "/results.md", rows, s);
     std::fprintf(stderr, "wrote %s/results.md, results.csv and the meshes\n", s.out.c_str());

@@ -166,6 +166,7 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
 
   // 11. The moves since the extraction kept embedded, as written: on floats where rounding to
   // them moves vertices less than the extraction places them.
+  progress.update("embed", -1.0);
   const bool float_grid = float_grid_is_finer(r.surface.vertices, kOutputEdgeMargin * r.h_min / box.scale());
   keep_embedded(r.surface, std::move(embedded), float_grid, r.normals, o.limits.threads);
   for (std::size_t i = 0; i < r.surface.vertices.size() && !r.volume.vertices.empty(); ++i) {
