@@ -10,9 +10,12 @@
 namespace lsr::detail {
 namespace {
 
-// After 7 halvings what is left of a move is under 1/128 of it, finer than the extraction
-// places vertices (1% of their edge from its ends, closed_surface.h): then all the way back.
-constexpr int kHalvings = 7;
+// Each round keeps 3/4 of a move that still intersects: a shortened move loses at most a
+// quarter more than it had to (docs/how-it-works.md, Embedded output). After 17 rounds what is
+// left is under 1/128 of the move (0.75^17 = 0.0075), finer than the extraction places vertices
+// (1% of their edge from its ends, closed_surface.h): then all the way back.
+constexpr double kKept = 0.75;
+constexpr int kRounds = 17;
 
 template <int D>
 Vec<D> to_float(const Vec<D>& x) {
@@ -48,7 +51,7 @@ std::vector<char> keep_embedded(LevelSetMesh<D>& surface, Points<D> embedded, bo
       if (!back[v]) continue;
       shortened[v] = 1;
       any = true;
-      share[v] = round >= kHalvings ? 0.0 : 0.5 * share[v];
+      share[v] = round >= kRounds ? 0.0 : kKept * share[v];
       // On the segment (rounding is monotone: a rounded point between two floats stays between
       // them), within the boxes the candidates were found in.
       const Vec<D> lo = embedded[v].cwiseMin(target[v]), hi = embedded[v].cwiseMax(target[v]);

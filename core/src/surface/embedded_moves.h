@@ -15,7 +15,7 @@ namespace lsr::detail {
 
 /// @brief Shortens the moves from `embedded` (#surface vertices) to the surface's positions
 /// until no two facets intersect (self_intersections.h): round after round, each moved vertex
-/// of an intersecting pair goes half way back, after kHalvings rounds all the way. With
+/// of an intersecting pair keeps 3/4 of its move, after kRounds rounds none of it. With
 /// `float_grid`, every position (the embedded ones, the targets and each shortened one) is first
 /// rounded to float: what float readers (PCL's PolygonMesh, STL, VTK, OpenMesh's PLY reader)
 /// see is then exactly what was checked, whatever their rounding. Shortened vertices take their
@@ -23,7 +23,7 @@ namespace lsr::detail {
 /// @pre the surface at `embedded` (rounded, with `float_grid`) does not intersect itself: an
 /// extracted level set, or a subdivision of one.
 /// @post the surface does not intersect itself: each round puts a vertex back for good or
-/// halves moves, and the surface at `embedded` is embedded.
+/// shortens moves, and the surface at `embedded` is embedded.
 /// @return the vertices whose moves were shortened (#vertices flags)
 template <int D>
 std::vector<char> keep_embedded(LevelSetMesh<D>& surface, Points<D> embedded, bool float_grid, Points<D>& normals, int threads);
