@@ -16,6 +16,7 @@
 #include "compare_methods.h"
 #include "geometry/nearest_point_index.h"
 #include "geometry/self_intersections.h"
+#include "surface/embedded_moves.h"
 #include "lsrecon/adapters/pcl_mesh.h"
 #include "lsrecon/adapters/point_files.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
@@ -184,7 +185,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   // As saved (floats, below): the pairs of triangles that intersect, decided exactly.
   lsr::Points<3> saved = vertices;
-  for (auto& v : saved) v = v.cast<float>().cast<double>();
+  for (auto& v : saved) v = lsr::detail::rounded_to_float(v);
   const std::size_t intersecting = lsr::detail::count_self_intersections(saved, triangles, 0);
   const lsr::SurfaceDistances d = c.sdf ? lsr::compare_to_truth(vertices, triangles, c.sdf, c.truth, 100000)
                                         : lsr::SurfaceDistances{};

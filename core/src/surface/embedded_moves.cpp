@@ -17,19 +17,14 @@ namespace {
 constexpr double kKept = 0.75;
 constexpr int kRounds = 17;
 
-template <int D>
-Vec<D> to_float(const Vec<D>& x) {
-  return x.template cast<float>().template cast<double>();
-}
-
 }  // namespace
 
 template <int D>
 std::vector<char> keep_embedded(LevelSetMesh<D>& surface, Points<D> embedded, bool float_grid, Points<D>& normals, int threads) {
   Points<D>& x = surface.vertices;
   if (float_grid) {
-    for (auto& p : x) p = to_float(p);
-    for (auto& p : embedded) p = to_float(p);
+    for (auto& p : x) p = rounded_to_float(p);
+    for (auto& p : embedded) p = rounded_to_float(p);
   }
   const Points<D> target = x;
   std::vector<double> share(x.size(), 1.0);  // of its move each vertex keeps
@@ -56,7 +51,7 @@ std::vector<char> keep_embedded(LevelSetMesh<D>& surface, Points<D> embedded, bo
       // them), within the boxes the candidates were found in.
       const Vec<D> lo = embedded[v].cwiseMin(target[v]), hi = embedded[v].cwiseMax(target[v]);
       const Vec<D> y = embedded[v] + share[v] * (target[v] - embedded[v]);
-      x[v] = share[v] == 0.0 ? embedded[v] : Vec<D>((float_grid ? to_float(y) : y).cwiseMax(lo).cwiseMin(hi));
+      x[v] = share[v] == 0.0 ? embedded[v] : Vec<D>((float_grid ? rounded_to_float(y) : y).cwiseMax(lo).cwiseMin(hi));
     }
     if (!any) break;  // embedded, or only pairs no move made (against the precondition)
     for (std::size_t f = 0; f < surface.facets.size(); ++f) {

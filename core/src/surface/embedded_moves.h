@@ -28,6 +28,18 @@ namespace lsr::detail {
 template <int D>
 std::vector<char> keep_embedded(LevelSetMesh<D>& surface, Points<D> embedded, bool float_grid, Points<D>& normals, int threads);
 
+/// @brief x rounded to float, as a float reader stores it. Through a volatile float: GCC 12's
+/// SLP vectorizer drops a double-to-float-to-double round trip of adjacent values (-O2).
+template <int D>
+Vec<D> rounded_to_float(const Vec<D>& x) {
+  Vec<D> rounded;
+  for (int k = 0; k < D; ++k) {
+    const volatile float f = static_cast<float>(x[k]);
+    rounded[k] = f;
+  }
+  return rounded;
+}
+
 /// @brief Whether rounding `x` to float moves no vertex farther than `resolution`: by at most
 /// 2^-24 of its largest coordinate (half a float's unit in the last place).
 template <int D>
