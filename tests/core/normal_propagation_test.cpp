@@ -30,7 +30,7 @@ PropagatedSenses propagate(const Points<3>& p, const Points<3>& normals) {
   const NearestPointIndex<3> index(p);
   LargeVector<Index> knn;
   index.query_k(p, kNeighbours, knn);
-  return propagate_senses<3>(normals, knn, kNeighbours);
+  return propagate_senses<3>(p, normals, knn, kNeighbours);
 }
 
 // Every third normal flipped (and one in seven more): after propagation each normal times its
@@ -63,6 +63,29 @@ TEST(NormalPropagation, SeparatePiecesAreSeparateTrees) {
       ASSERT_EQ(s.part[i], s.part[first]);
       ASSERT_GT(s.sense[i] * flipped[i].dot(outward[i]) * sign, 0.0) << i;
     }
+  }
+}
+
+// Sheets closer than the sampling's spacing (0.065 here) facing each other: two spheres 0.04
+// apart, and a shell 0.03 thick (its inner sphere's outward normals point inwards). Across the
+// gap the normals are antiparallel, so the plain rule (n_p . n_q) flips one sheet against the
+// other; against n_p mirrored in the chord's bisecting plane they agree, as along each sheet.
+TEST(NormalPropagation, SheetsFacingAcrossAGapStayConsistent) {
+  for (const bool shell : {false, true}) {
+    Points<3> p, outward;
+    sphere(3000, 1.0, Vec<3>::Zero(), p, outward);
+    if (shell) {
+      sphere(3000, 0.97, Vec<3>::Zero(), p, outward);
+      for (std::size_t i = 3000; i < p.size(); ++i) outward[i] = -outward[i];
+    } else {
+      sphere(3000, 1.0, Vec<3>(2.04, 0, 0), p, outward);
+    }
+    Points<3> flipped = outward;
+    for (std::size_t i = 0; i < flipped.size(); i += 3) flipped[i] = -flipped[i];
+    const PropagatedSenses s = propagate(p, flipped);
+    ASSERT_EQ(s.parts, 1) << shell;  // the k-nearest graph joins the sheets
+    const double sign = s.sense[0] * flipped[0].dot(outward[0]);
+    for (std::size_t i = 0; i < p.size(); ++i) ASSERT_GT(s.sense[i] * flipped[i].dot(outward[i]) * sign, 0.0) << shell << " " << i;
   }
 }
 

@@ -35,7 +35,7 @@ FrontEvolution<D>::FrontEvolution(const FrontProblem<D>& problem, const Reconstr
 
 template <int D>
 void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, ReconstructionResult<D>& r, const Progress& progress,
-                            StageClock& clock, double median_eps, double box_scale) {
+                            StageClock& clock, double median_eps, double box_scale, const Restart& restart) {
   const ReconstructionOptions& o = o_;
   const int interval = schedule_.interval;
   const std::size_t nv = p_.mesh.vertices.size();
@@ -48,6 +48,7 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
   double progress_fraction = 0.0;
   best_ = u;
   bool best_front_ok = false;
+  bool restarted = false;
   double cloud_points =
       p_.represented.empty() ? double(p_.at.size()) : double(std::accumulate(p_.represented.begin(), p_.represented.end(), Index(0)));
   // A tile's test reads its own points and front only.
@@ -136,8 +137,17 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         // Stalled: the front no longer gets closer to the last points. Curvature holds it short
         // of the tip of a sharp concave crease, pinned cells short of a slit between close
         // sheets; the fit places the surface there. A few such points do not make the run fail.
-        if (few_unreached) r.status = ReconstructionStatus::converged;
-        break;
+        if (few_unreached) {
+          r.status = ReconstructionStatus::converged;
+          break;
+        }
+        if (!restart || restarted) break;
+        // Once: on from the restart's field, measured afresh.
+        restarted = true;
+        r.stalled = false;
+        u = restart(best_);
+        stall = StallDetector(schedule_.stall);
+        front_distance = std::numeric_limits<double>::infinity();
       }
     }
   } catch (const Cancelled&) {

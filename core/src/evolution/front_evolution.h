@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <vector>
 
 namespace lsr::detail {
@@ -63,9 +64,12 @@ class FrontEvolution {
   /// stopping test passes, the front stalls, max_iterations pass or the progress callback
   /// cancels. Fills the loop's fields of `r`: status, stalled, iterations, best_iteration,
   /// unreached_points, residual_history (in input units: times `median_eps` / `box_scale`),
-  /// solver_iterations.
+  /// solver_iterations. On the first stall short of the stopping test, if given, the loop
+  /// goes on from `restart(best())` (a field renormalised near its front); the best iterate
+  /// stays the best of both.
+  using Restart = std::function<Eigen::VectorXd(const Eigen::VectorXd& best)>;
   void run(Eigen::VectorXd u, Eigen::VectorXd& d, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock,
-           double median_eps, double box_scale);
+           double median_eps, double box_scale, const Restart& restart = {});
 
   /// @brief The iterate with the lowest residual.
   Eigen::VectorXd& best() { return best_; }

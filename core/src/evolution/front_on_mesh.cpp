@@ -7,9 +7,16 @@
 #include "evolution/front_evolution.h"
 #include "evolution/pinning.h"
 #include "mesh/vertices_near.h"
+#include "evolution/renormalization.h"
+#include "start/occupancy_start.h"
 #include "start/start_fields.h"
 
 namespace lsr::detail {
+
+namespace {
+// The k-nearest graph along which the restart's senses propagate: as the open-side closure's.
+constexpr int kOrientingNeighbours = 16;
+}  // namespace
 
 template <int D>
 FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<double>& point_scale, AdaptiveMesh<D>& adaptive,
@@ -81,7 +88,25 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
                                 scale,        dist,                 away,  near_hole,     sampled.left_out.represented,
                                 tested_points, tested_vertices};
   FrontEvolution<D> evolution(problem, o, settings.schedule, settings.step);
-  evolution.run(start.u, attract.d, r, progress, clock, settings.median_eps, box.scale());
+  // A start across the data can leave a pair of sheets over a gap of the data (the caps of a
+  // sphere through a torus's tube, over its hole): there the two-sided drive points along the
+  // sheets and vanishes, and they stall apart. The front cannot say which side is inside either:
+  // it reaches the data from the side the start was on. The data's own occupancy, their
+  // winding number with consistent outward normals, decides it once, everywhere
+  // (occupancy_start.h), and the loop goes on from there. Not in a tile: the winding number
+  // needs the whole cloud.
+  typename FrontEvolution<D>::Restart restart;
+  if (o.evolution.two_sided && !tested) {
+    restart = [&](const Eigen::VectorXd&) {
+      LargeVector<Index> knn;
+      data.query_k(data.points(), kOrientingNeighbours, knn, o.limits.threads);
+      Eigen::VectorXd u = occupancy_start(mesh.vertices, data.points(), sampling.normals, sampling.spacing, knn, kOrientingNeighbours,
+                                          o.limits.threads);
+      renormalize(mesh, f.neighbours, u, settings.schedule.band, o.limits.threads);
+      return u;
+    };
+  }
+  evolution.run(start.u, attract.d, r, progress, clock, settings.median_eps, box.scale(), restart);
   r.residual = evolution.best_residual() * settings.median_eps / box.scale();
   f.best = std::move(evolution.best());
   f.best_is_distance = evolution.best_is_distance();

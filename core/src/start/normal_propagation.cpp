@@ -10,8 +10,14 @@
 namespace lsr::detail {
 
 template <int D>
-PropagatedSenses propagate_senses(const Points<D>& normals, const LargeVector<Index>& knn, int k) {
+PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, int k) {
   const std::size_t n = normals.size();
+  // n_q against n_p reflected in the plane bisecting the chord e (unit, p to q): the normals of
+  // a sphere (circle) are each other's mirror images there, and on a plane it is n_p . n_q.
+  const auto agreement = [&](std::size_t p, std::size_t q) {
+    const Vec<D> e = (points[q] - points[p]).normalized();
+    return normals[p].dot(normals[q]) - 2.0 * normals[p].dot(e) * normals[q].dot(e);
+  };
   // The graph made symmetric: a point is joined to its k nearest and to those that list it.
   std::vector<Index> offsets(n + 1, 0);
   for (std::size_t p = 0; p < n; ++p) {
@@ -43,7 +49,7 @@ PropagatedSenses propagate_senses(const Points<D>& normals, const LargeVector<In
   const auto push_edges = [&](std::size_t p) {
     for (Index e = offsets[p]; e < offsets[p + 1]; ++e) {
       const auto q = std::size_t(adjacent[std::size_t(e)]);
-      if (out.sense[q] == 0) heap.emplace(1.0 - std::abs(normals[p].dot(normals[q])), Index(q), Index(p));
+      if (out.sense[q] == 0) heap.emplace(1.0 - std::abs(agreement(p, q)), Index(q), Index(p));
     }
   };
   for (std::size_t seed = 0; seed < n; ++seed) {
@@ -56,7 +62,7 @@ PropagatedSenses propagate_senses(const Points<D>& normals, const LargeVector<In
       heap.pop();
       const auto q = std::size_t(to), p = std::size_t(from);
       if (out.sense[q] != 0) continue;
-      out.sense[q] = normals[p].dot(normals[q]) * out.sense[p] >= 0.0 ? 1 : -1;
+      out.sense[q] = agreement(p, q) * out.sense[p] >= 0.0 ? 1 : -1;
       out.part[q] = out.parts;
       push_edges(q);
     }
@@ -65,6 +71,7 @@ PropagatedSenses propagate_senses(const Points<D>& normals, const LargeVector<In
   return out;
 }
 
-template PropagatedSenses propagate_senses<3>(const Points<3>&, const LargeVector<Index>&, int);
+template PropagatedSenses propagate_senses<2>(const Points<2>&, const Points<2>&, const LargeVector<Index>&, int);
+template PropagatedSenses propagate_senses<3>(const Points<3>&, const Points<3>&, const LargeVector<Index>&, int);
 
 }  // namespace lsr::detail

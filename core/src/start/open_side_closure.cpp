@@ -69,9 +69,9 @@ int side_of(const Vec<D>& x, const Vec<D>& p, const Vec<D>& n) {
 // the normals' smoothest paths instead (normal_propagation.h; hippo1: 89% agree), each tree's
 // overall sense the paths' vote, weighted by how much they differ.
 template <int D>
-void propagate_single_view_senses(const Points<D>& normals, const LargeVector<Index>& knn, const std::vector<double>& g_plus,
+void propagate_single_view_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, const std::vector<double>& g_plus,
                                   const std::vector<double>& g_minus, std::vector<signed char>& sense) {
-  const PropagatedSenses tree = propagate_senses<D>(normals, knn, kSideNeighbours);
+  const PropagatedSenses tree = propagate_senses<D>(points, normals, knn, kSideNeighbours);
   std::vector<double> vote(std::size_t(tree.parts), 0.0);
   for (std::size_t p = 0; p < normals.size(); ++p) {
     const double a = g_plus[p], b = g_minus[p];
@@ -199,7 +199,7 @@ bool closed_up_to_holes(const SimplexMesh<D>& mesh, const Points<D>& points, con
       oriented[p] = double(disc_sides[p]) * normals[p];
     }
   }
-  const WindingNumber winding(points, oriented, area);
+  const WindingNumber<D> winding(points, oriented, area);
   const std::size_t nv = mesh.vertices.size();
   std::vector<double> w(nv, 0.0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
@@ -282,7 +282,7 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   std::size_t guesses = 0;
   for (std::size_t p = 0; p < np; ++p) guesses += g_plus[p] < kInf && g_minus[p] < kInf && ambiguous_paths(g_plus[p], g_minus[p]);
   const bool single_view = double(guesses) >= kSingleViewShare * double(out.two_sided_points);
-  if (single_view) propagate_single_view_senses(normals, knn, g_plus, g_minus, sense);
+  if (single_view) propagate_single_view_senses(points, normals, knn, g_plus, g_minus, sense);
   Points<D> outward(np);
   std::vector<double> area(np);
   for (std::size_t p = 0; p < np; ++p) {
@@ -296,7 +296,7 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   }
   // The pocket: what the flood reached where the oriented data wind around it more than half
   // (on a single view, more than the far side of a ball seen from one side).
-  const WindingNumber winding(points, outward, area);
+  const WindingNumber<D> winding(points, outward, area);
   const double pocket_winding = single_view ? kSingleViewWinding : 0.5;
   std::vector<char> pocket(nv, 0);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())

@@ -15,17 +15,27 @@ constexpr int kMaxDepth = 40;
 // 1/2 that w is compared with.
 constexpr double kFarRatio = 3.0;
 
-double dipole_term(const Vec<3>& dipole, const Vec<3>& at, const Vec<3>& x) {
-  const Vec<3> e = at - x;
-  const double r2 = e.squaredNorm();
-  if (r2 == 0.0) return 0.0;
-  return dipole.dot(e) / (4.0 * kPi * r2 * std::sqrt(r2));
-}
-
 }  // namespace
 
-WindingNumber::WindingNumber(const Points<3>& points, const Points<3>& normals, const std::vector<double>& areas)
-    : order_(points.size()), points_(points), dipoles_(points.size()) {
+template <int D>
+double WindingNumber<D>::term(const Vec<D>& dipole, const Vec<D>& at, double radius, const Vec<D>& x) {
+  const Vec<D> e = at - x;
+  const double r2 = std::max(e.squaredNorm(), radius * radius);
+  if (r2 == 0.0) return 0.0;
+  if constexpr (D == 3) return dipole.dot(e) / (4.0 * kPi * r2 * std::sqrt(r2));
+  return dipole.dot(e) / (2.0 * kPi * r2);
+}
+
+template <int D>
+double sample_measure(double spacing) {
+  return D == 3 ? kPi * spacing * spacing / 6.0 : spacing;
+}
+
+template <int D>
+WindingNumber<D>::WindingNumber(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
+                                const std::vector<double>& radii)
+    : order_(points.size()), points_(points), dipoles_(points.size()), radii_(radii) {
+  if (radii_.empty()) radii_.assign(points.size(), 0.0);
   for (std::size_t p = 0; p < points.size(); ++p) {
     order_[p] = Index(p);
     dipoles_[p] = areas[p] * normals[p];
@@ -35,11 +45,14 @@ WindingNumber::WindingNumber(const Points<3>& points, const Points<3>& normals, 
   build(0, 0, Index(points.size()), 0);
 }
 
-void WindingNumber::build(Index id, Index begin, Index end, int depth) {
-  Vec<3> lo = Vec<3>::Constant(HUGE_VAL), hi = Vec<3>::Constant(-HUGE_VAL);
-  Vec<3> centroid = Vec<3>::Zero(), dipole = Vec<3>::Zero();
+template <int D>
+void WindingNumber<D>::build(Index id, Index begin, Index end, int depth) {
+  Vec<D> lo = Vec<D>::Constant(HUGE_VAL), hi = Vec<D>::Constant(-HUGE_VAL);
+  Vec<D> centroid = Vec<D>::Zero(), dipole = Vec<D>::Zero();
+  double reach = 0.0;
   for (Index i = begin; i < end; ++i) {
-    const Vec<3>& p = points_[std::size_t(order_[std::size_t(i)])];
+    const Vec<D>& p = points_[std::size_t(order_[std::size_t(i)])];
+    reach = std::max(reach, radii_[std::size_t(order_[std::size_t(i)])]);
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
     centroid += p;
@@ -52,14 +65,17 @@ void WindingNumber::build(Index id, Index begin, Index end, int depth) {
   cell.centroid = centroid;
   cell.dipole = dipole;
   cell.radius = radius;
+  cell.reach = reach;
   cell.begin = begin;
   cell.end = end;
   if (end - begin > kLeafPoints && depth < kMaxDepth && radius > 0.0) {
-    // Split at the box's middle along each axis: eight octants, the empty ones dropped.
-    const Vec<3> mid = 0.5 * (lo + hi);
+    // Split at the box's middle along each axis: 2^D parts, the empty ones dropped.
+    const Vec<D> mid = 0.5 * (lo + hi);
     const auto octant = [&](Index p) {
-      const Vec<3>& x = points_[std::size_t(p)];
-      return int(x[0] > mid[0]) | int(x[1] > mid[1]) << 1 | int(x[2] > mid[2]) << 2;
+      const Vec<D>& x = points_[std::size_t(p)];
+      int k = 0;
+      for (int a = 0; a < D; ++a) k |= int(x[a] > mid[a]) << a;
+      return k;
     };
     std::stable_sort(order_.begin() + begin, order_.begin() + end, [&](Index a, Index b) { return octant(a) < octant(b); });
     std::vector<std::pair<Index, Index>> parts;
@@ -81,19 +97,21 @@ void WindingNumber::build(Index id, Index begin, Index end, int depth) {
   cells_[std::size_t(id)] = cell;
 }
 
-double WindingNumber::at(const Vec<3>& x) const {
+template <int D>
+double WindingNumber<D>::at(const Vec<D>& x) const {
   double w = 0.0;
   std::vector<Index> stack;
   if (!cells_.empty()) stack.push_back(0);
   while (!stack.empty()) {
     const Cell& c = cells_[std::size_t(stack.back())];
     stack.pop_back();
-    if ((c.centroid - x).norm() > kFarRatio * c.radius) {
-      w += dipole_term(c.dipole, c.centroid, x);
+    const double far = (c.centroid - x).norm();
+    if (far > kFarRatio * c.radius && far > c.radius + c.reach) {
+      w += term(c.dipole, c.centroid, 0.0, x);
     } else if (c.child < 0) {
       for (Index i = c.begin; i < c.end; ++i) {
         const auto p = std::size_t(order_[std::size_t(i)]);
-        w += dipole_term(dipoles_[p], points_[p], x);
+        w += term(dipoles_[p], points_[p], radii_[p], x);
       }
     } else {
       for (int k = 0; k < c.children; ++k) stack.push_back(c.child + k);
@@ -101,5 +119,10 @@ double WindingNumber::at(const Vec<3>& x) const {
   }
   return w;
 }
+
+template class WindingNumber<2>;
+template class WindingNumber<3>;
+template double sample_measure<2>(double);
+template double sample_measure<3>(double);
 
 }  // namespace lsr::detail

@@ -27,9 +27,9 @@ Points<3> sphere_points(int n, double z_min = -1.0) {
 }
 
 // Each Fibonacci point stands for 4 pi / n of the sphere.
-WindingNumber unit_sphere_winding(int n, double z_min) {
+WindingNumber<3> unit_sphere_winding(int n, double z_min) {
   const Points<3> p = sphere_points(n, z_min);
-  return WindingNumber(p, p, std::vector<double>(p.size(), 4.0 * kPi / n));
+  return WindingNumber<3>(p, p, std::vector<double>(p.size(), 4.0 * kPi / n));
 }
 
 // The reconstruction compares w with 1/2: an error below 0.1 leaves a margin of 0.4 on either
@@ -37,7 +37,7 @@ WindingNumber unit_sphere_winding(int n, double z_min) {
 constexpr double kTolerance = 0.1;
 
 TEST(WindingNumber, OneInsideAClosedSphereZeroOutside) {
-  const WindingNumber w = unit_sphere_winding(4000, -1.0);
+  const WindingNumber<3> w = unit_sphere_winding(4000, -1.0);
   for (const Vec<3>& x : {Vec<3>(0, 0, 0), Vec<3>(0.5, 0.2, -0.3), Vec<3>(0, 0, 0.7)}) EXPECT_NEAR(w.at(x), 1.0, kTolerance) << x.transpose();
   for (const Vec<3>& x : {Vec<3>(2, 0, 0), Vec<3>(1.3, 0.1, 0), Vec<3>(0, 0, -5)}) EXPECT_NEAR(w.at(x), 0.0, kTolerance) << x.transpose();
 }
@@ -45,7 +45,7 @@ TEST(WindingNumber, OneInsideAClosedSphereZeroOutside) {
 // A dome (the upper half sphere) subtends half of every direction from its rim's disc, and more
 // than half above it: w = 1/2 on the disc, whatever the dome, so {w > 1/2} closes it there.
 TEST(WindingNumber, AHalfOnTheDiscSpanningADomesRim) {
-  const WindingNumber w = unit_sphere_winding(8000, 0.0);
+  const WindingNumber<3> w = unit_sphere_winding(8000, 0.0);
   for (const double r : {0.0, 0.3, 0.6}) {
     EXPECT_NEAR(w.at(Vec<3>(r, 0, 0)), 0.5, kTolerance) << r;
     EXPECT_GT(w.at(Vec<3>(0, r, 0.4)), 0.5 + kTolerance) << r;
