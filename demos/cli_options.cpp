@@ -47,7 +47,10 @@ std::string format_number(double v) {
 }
 
 const char* initial_front_name(lsr::InitialFront f) {
-  return f == lsr::InitialFront::tagged ? "tagged" : f == lsr::InitialFront::enclosing ? "enclose" : "inside";
+  return f == lsr::InitialFront::tagged      ? "tagged"
+         : f == lsr::InitialFront::enclosing ? "enclose"
+         : f == lsr::InitialFront::occupancy ? "occupancy"
+                                             : "inside";
 }
 
 const char* scan_lines_name(lsr::ScanLines s) {
@@ -93,7 +96,8 @@ Cli parse(int argc, char** argv) {
               "with --anisotropic: the chord error allowed along the data, in local mesh sizes");
   line.group("front")
       .text("init", "START", init, "tagged: hug the data from outside (flood from the box walls); "
-            "enclose: a sphere around it; inside: a sphere inside it", {"tagged", "enclose", "inside"})
+            "enclose: a sphere around it; inside: a sphere inside it; occupancy: where the data's winding "
+            "number is above 1/2 (experimental)", {"tagged", "enclose", "inside", "occupancy"})
       .text("init-mesh", "FILE", c.init_mesh,
             "start from this closed surface (.ply .obj .off .stl .vtk; a previous scan, a rough model) or, "
             "in 2D, closed curves (.txt as lsrecon writes them), which may cross the data: the front is "
@@ -141,9 +145,10 @@ Cli parse(int argc, char** argv) {
   if (no_fit) s.output.fit_surface = false;
   if (keep_outliers) s.sampling.outlier_factor = 0.0;
   s.sampling.scan_lines = scan_lines == "yes" ? lsr::ScanLines::yes : scan_lines == "no" ? lsr::ScanLines::no : lsr::ScanLines::automatic;
-  s.start.initial_front = init == "inside" ? lsr::InitialFront::inside
-                    : init == "enclose" ? lsr::InitialFront::enclosing
-                                        : lsr::InitialFront::tagged;
+  s.start.initial_front = init == "inside"      ? lsr::InitialFront::inside
+                         : init == "enclose"   ? lsr::InitialFront::enclosing
+                         : init == "occupancy" ? lsr::InitialFront::occupancy
+                                               : lsr::InitialFront::tagged;
   const std::size_t expected = c.demo.empty() ? 2 : 1;
   if (positional.size() != expected) {
     line.fail(c.demo.empty() ? "expected INPUT and OUTPUT" : "with --demo, expected only OUTPUT");

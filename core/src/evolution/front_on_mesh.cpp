@@ -13,11 +13,6 @@
 
 namespace lsr::detail {
 
-namespace {
-// The k-nearest graph along which the restart's senses propagate: as the open-side closure's.
-constexpr int kOrientingNeighbours = 16;
-}  // namespace
-
 template <int D>
 FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<double>& point_scale, AdaptiveMesh<D>& adaptive,
                              const ReconstructionOptions& o, double hole_radius, const SignedDistance<D>* custom_start,
@@ -98,10 +93,7 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   typename FrontEvolution<D>::Restart restart;
   if (o.evolution.two_sided && !tested) {
     restart = [&](const Eigen::VectorXd&) {
-      LargeVector<Index> knn;
-      data.query_k(data.points(), kOrientingNeighbours, knn, o.limits.threads);
-      Eigen::VectorXd u = occupancy_start(mesh.vertices, data.points(), sampling.normals, sampling.spacing, knn, kOrientingNeighbours,
-                                          o.limits.threads);
+      Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, sampling.spacing, o.limits.threads);
       renormalize(mesh, f.neighbours, u, settings.schedule.band, o.limits.threads);
       return u;
     };

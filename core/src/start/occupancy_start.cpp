@@ -2,6 +2,7 @@
 /// @file occupancy_start.cpp
 #include "start/occupancy_start.h"
 
+#include "sampling/local_sampling.h"
 #include "start/normal_propagation.h"
 #include "start/winding_number.h"
 
@@ -32,12 +33,45 @@ Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, con
   return out;
 }
 
+namespace {
+// A bound on the work, not a threshold: a region flipped by the spanning tree wears down by
+// about a probe distance per pass (two spacings); Berger et al.'s anchor needed 14 passes.
+constexpr int kConsistencyPasses = 32;
+}  // namespace
+
 template <int D>
-Eigen::VectorXd occupancy_start(const Points<D>& vertices, const Points<D>& points, const Points<D>& normals,
-                                const std::vector<double>& spacing, const LargeVector<Index>& knn, int k, int threads) {
+void make_consistent(const Points<D>& points, Points<D>& outward, const std::vector<double>& areas,
+                     const std::vector<double>& radii, int threads) {
+  std::vector<char> flip(points.size());
+  for (int pass = 0; pass < kConsistencyPasses; ++pass) {
+    const WindingNumber<D> w(points, outward, areas, radii);
+    std::size_t flips = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : flips) num_threads(threads > 0 ? threads : omp_get_max_threads())
+    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
+      const auto p = std::size_t(i);
+      const Vec<D> probe = 2.0 * radii[p] * outward[p];
+      flip[p] = w.at(points[p] + probe) > w.at(points[p] - probe);
+      flips += std::size_t(flip[p]);
+    }
+    if (flips == 0) return;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      if (flip[p]) outward[p] = -outward[p];
+    }
+  }
+}
+
+template <int D>
+Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
+                                const std::vector<double>& spacing, int threads) {
+  const Points<D>& points = data.points();
+  constexpr int k = LocalSampling<D>::kNeighbours;
+  LargeVector<Index> knn;
+  data.query_k(points, k, knn, threads);
   std::vector<double> area(points.size());
   for (std::size_t p = 0; p < points.size(); ++p) area[p] = sample_measure<D>(spacing[p]);
-  const WindingNumber<D> w(points, outward_normals(points, normals, area, knn, k), area, spacing);
+  Points<D> outward = outward_normals(points, normals, area, knn, k);
+  make_consistent(points, outward, area, spacing, threads);
+  const WindingNumber<D> w(points, outward, area, spacing);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(vertices.size()); ++v) u[v] = 0.5 - w.at(vertices[std::size_t(v)]);
@@ -46,7 +80,9 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const Points<D>& poin
 
 template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int);
 template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int);
-template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int, int);
-template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int, int);
+template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&, int);
+template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
 
 }  // namespace lsr::detail

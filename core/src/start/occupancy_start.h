@@ -4,6 +4,7 @@
 /// wind more than half round a vertex (winding_number.h).
 #pragma once
 
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/types.h"
 
 #include <Eigen/Core>
@@ -22,14 +23,25 @@ template <int D>
 Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
                           const LargeVector<Index>& knn, int k);
 
-/// @brief 1/2 - w at each vertex, w the generalised winding number of `points` with their
-/// outward_normals, each sample standing for the patch its `spacing` gives (sample_measure) and
-/// smoothed over that radius. Negative inside; the zero level set passes
-/// through the samples and, across a gap in them, where the data subtend half the directions
+/// @brief `outward` (unit normals oriented outwards, as outward_normals gives them) made
+/// consistent with the winding number w they generate, samples weighing `areas` and smoothed
+/// over `radii`: each pass flips the normals along which w is larger at p + 2 r_p n_p than at
+/// p - 2 r_p n_p (beyond the smoothing, where a sheet's own jump of w is complete), until no
+/// flip or kConsistencyPasses. Where a wrong turn of the spanning tree flipped a region, the
+/// passes wear it down from its border inwards.
+template <int D>
+void make_consistent(const Points<D>& points, Points<D>& outward, const std::vector<double>& areas,
+                     const std::vector<double>& radii, int threads);
+
+/// @brief 1/2 - w at each vertex, w the generalised winding number of the `data` points with
+/// their `normals` turned outward_normals and make_consistent along the graph of the neighbourhoods the normals
+/// were fitted on (LocalSampling::kNeighbours), each sample standing for the patch its
+/// `spacing` gives (sample_measure) and smoothed over that radius. Negative inside; the zero
+/// level set passes through the samples and, across a gap in them, where the data subtend half the directions
 /// (the disc spanning a hole's rim). Far from the data it is 1/2 outside and -1/2 inside, so
 /// a sheet the front left across a gap of the data (a membrane over a torus's hole) is gone.
 template <int D>
-Eigen::VectorXd occupancy_start(const Points<D>& vertices, const Points<D>& points, const Points<D>& normals,
-                                const std::vector<double>& spacing, const LargeVector<Index>& knn, int k, int threads);
+Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
+                                const std::vector<double>& spacing, int threads);
 
 }  // namespace lsr::detail

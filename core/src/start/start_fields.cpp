@@ -4,6 +4,7 @@
 
 #include "mesh/vertices_near.h"
 #include "start/nested_outsides.h"
+#include "start/occupancy_start.h"
 #include "start/open_side_closure.h"
 
 #include "evolution/renormalization.h"
@@ -158,6 +159,9 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
     const bool has_rims = std::find(sampling.rim.begin(), sampling.rim.end(), 1) != sampling.rim.end();
     if (D == 3 && s.tagged && !has_rims) u += o.start.start_offset * scale;
     if (!s.tagged) u = initial_field(mesh, data, InitialFront::enclosing, h_min);
+  } else if (o.start.initial_front == InitialFront::occupancy) {
+    u = occupancy_start(mesh.vertices, data, sampling.normals, sampling.spacing, o.limits.threads);
+    renormalize(mesh, neighbours, u, band, o.limits.threads);
   } else {
     u = initial_field(mesh, data, o.start.initial_front, h_min);
   }

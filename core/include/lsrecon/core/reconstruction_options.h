@@ -30,6 +30,9 @@ enum class InitialFront {
   tagged,
   enclosing,  ///< a circle / sphere around all the data; alpha > 0 (the front shrinks)
   inside,     ///< a circle / sphere around the data's centroid, inside the shape; alpha < 0
+  /// where the data's generalised winding number, with their normals oriented outwards, is
+  /// above 1/2: at the data already, closed across gaps; alpha > 0 (experimental)
+  occupancy,
 };
 
 /// @brief The linear solver of the semi-implicit step.
