@@ -2,6 +2,8 @@
 /// @file p1_operators.cpp
 #include "evolution/p1_operators.h"
 
+#include "thread_count.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
@@ -97,7 +99,6 @@ Vec<D> row_block_times(const P1Operators<D>& ops, Index i, const Eigen::VectorXd
   return sum;
 }
 
-int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 // out[j] = sum over the entries (i, j) of G's block pattern of f(i, G(D i .. D i + D - 1, j)),
 // for every j: G^T-like products scattered from G's rows, read in storage order. Each thread
@@ -156,7 +157,7 @@ Eigen::VectorXd scatter_columns(const P1Operators<D>& ops, F f) {
 template <int D>
 P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g, bool with_divergence,
                                      const VertexNeighbours* neighbours, int threads) {
-  threads = thread_count(threads);
+  threads = detail::thread_count(threads);
   P1Operators<D> ops;
   // Filled in place: a copy of each would touch another 0.6 GB per million vertices.
   assemble_gradient(mesh, g, neighbours ? *neighbours : vertex_neighbours(mesh, threads), threads, ops);

@@ -6,6 +6,7 @@
 
 #include "geometry/point_simplex_distance.h"
 #include "lsrecon/core/large_array_allocator.h"
+#include "thread_count.h"
 
 #include <algorithm>
 #include <array>
@@ -305,7 +306,7 @@ void propagate(const SimplexMesh<D>& mesh, const VertexNeighbours& g, const Leve
 template <int D>
 RenormalizationReport<D> renormalize(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
                                      Eigen::VectorXd& u, double band, int threads) {
-  threads = threads > 0 ? threads : omp_get_max_threads();
+  threads = detail::thread_count(threads);
   RenormalizationReport<D> report;
   const std::vector<double> values(u.data(), u.data() + u.size());
   report.front = extract_zero_level_set(mesh, values, 1e-9, threads);

@@ -2,6 +2,7 @@
 /// @file merge_without_joins.cpp
 #include "fit/merge_without_joins.h"
 
+#include "graph/disjoint_sets.h"
 #include "start/outside_flood_fill.h"
 
 #include <algorithm>
@@ -15,19 +16,14 @@ namespace {
 
 // Union-find over the few (<= ~60) vertices of one link, by position in `link`.
 struct LinkSets {
-  std::vector<Index> link, parent;
+  std::vector<Index> link;
+  detail::DisjointSets parts;
   int slot(Index v) {
     const auto it = std::find(link.begin(), link.end(), v);
     if (it != link.end()) return int(it - link.begin());
     link.push_back(v);
-    parent.push_back(Index(parent.size()));
-    return int(link.size()) - 1;
+    return int(parts.add());
   }
-  Index find(Index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
 };
 
 // The simplices containing each candidate, CSR by candidate slot.
@@ -128,7 +124,7 @@ LinkPieces link_pieces(const SimplexMesh<D>& mesh, const std::vector<Index>& sta
                        const std::vector<char>& negative) {
   thread_local LinkSets sets;
   sets.link.clear();
-  sets.parent.clear();
+  sets.parts.clear();
   for (Index s : star) {
     int others[D], n = 0;
     for (Index w : mesh.simplices[s]) {
@@ -136,13 +132,13 @@ LinkPieces link_pieces(const SimplexMesh<D>& mesh, const std::vector<Index>& sta
     }
     for (int i = 0; i < D; ++i) {
       for (int j = i + 1; j < D; ++j) {
-        if (negative[sets.link[others[i]]] == negative[sets.link[others[j]]]) sets.unite(others[i], others[j]);
+        if (negative[sets.link[others[i]]] == negative[sets.link[others[j]]]) sets.parts.unite(others[i], others[j]);
       }
     }
   }
   LinkPieces pieces;
   for (std::size_t i = 0; i < sets.link.size(); ++i) {
-    if (sets.find(Index(i)) == Index(i)) ++(negative[sets.link[i]] ? pieces.negative : pieces.non_negative);
+    if (sets.parts.find(Index(i)) == Index(i)) ++(negative[sets.link[i]] ? pieces.negative : pieces.non_negative);
   }
   return pieces;
 }

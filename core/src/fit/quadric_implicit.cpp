@@ -4,6 +4,7 @@
 
 #include "fit/height_field_fit.h"
 #include "sampling/local_sampling.h"
+#include "thread_count.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,6 @@
 namespace lsr {
 namespace {
 
-int thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 // The PCA neighbourhood's radius in spacings: the k-th neighbour's distance grows like k along
 // a curve and like sqrt(k) on a surface.
@@ -95,7 +95,7 @@ QuadricImplicit<D>::QuadricImplicit(const NearestPointIndex<D>& data, Points<D> 
     for (std::size_t c = 0; c < class_k.size(); ++c) {
       if (!members[c].empty()) data.query_k(members[c], class_k[c], wide[c], threads);
     }
-#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
     for (long i = begin; i < end; ++i) {
       const int c = class_of(std::size_t(i));
       const Index* near = c >= 0 ? &wide[std::size_t(c)][std::size_t(row[std::size_t(i - begin)]) * std::size_t(class_k[std::size_t(c)])]
@@ -231,7 +231,7 @@ void QuadricImplicit<D>::blend(const Points<D>& queries, const LargeVector<Index
   value.assign(queries.size(), 0.0);
   if (normal) normal->assign(queries.size(), Vec<D>::Zero());
   const long n = long(queries.size());
-#pragma omp parallel for schedule(static) num_threads(thread_count(threads))
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
   for (long q = 0; q < n; ++q) {
     const Index* near = &nearest[std::size_t(q) * k];
     // Gaussian weights of width spacing_i, relative to the largest so that far queries do not

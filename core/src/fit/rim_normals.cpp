@@ -3,6 +3,7 @@
 #include "fit/rim_normals.h"
 
 #include "sampling/local_sampling.h"
+#include "thread_count.h"
 
 #include <algorithm>
 
@@ -19,7 +20,7 @@ Points<D> rim_normals(const NearestPointIndex<D>& data, const Points<D>& queries
   data.query_k(queries, k, nearest, threads);
   const Points<D>& p = data.points();
   const long n = long(queries.size());
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
   for (long q = 0; q < n; ++q) {
     const Index* near = &nearest[std::size_t(q) * std::size_t(k)];
     const Vec<D>& x = queries[std::size_t(q)];

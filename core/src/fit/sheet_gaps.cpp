@@ -2,6 +2,8 @@
 /// @file sheet_gaps.cpp
 #include "fit/sheet_gaps.h"
 
+#include "thread_count.h"
+
 #include <algorithm>
 
 #include <omp.h>
@@ -30,7 +32,7 @@ std::vector<char> between_facing_sheets(const NearestPointIndex<D>& data, const 
   LargeVector<Index> nearest;
   data.query_k(far, k, nearest, threads);
   const Points<D>& p = data.points();
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
   for (std::ptrdiff_t slot = 0; slot < std::ptrdiff_t(asked.size()); ++slot) {
     const std::size_t q = asked[std::size_t(slot)];
     // The unit directions q -> p of the near points that q faces.

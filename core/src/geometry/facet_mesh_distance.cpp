@@ -3,6 +3,7 @@
 
 #include "geometry/point_simplex_distance.h"
 #include "lsrecon/core/errors.h"
+#include "thread_count.h"
 
 #include <omp.h>
 
@@ -164,7 +165,7 @@ template <int D>
 std::vector<double> FacetMeshDistance<D>::distances(const Points<D>& queries, int threads) const {
   std::vector<double> best;
   vertex_index_.query(queries, best, nullptr, threads);
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(detail::thread_count(threads))
   {
     std::vector<Index> scratch;
 #pragma omp for schedule(dynamic, 256)

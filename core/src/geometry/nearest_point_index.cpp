@@ -6,6 +6,7 @@
 #include "lsrecon/core/errors.h"
 #include "sampling/point_validation.h"
 #include "sampling/z_order.h"
+#include "thread_count.h"
 
 #include <flann/flann.hpp>
 
@@ -115,7 +116,7 @@ void NearestPointIndex<D>::query_within(const Points<D>& queries, const std::vec
   if (!impl_->index) return;
   const flann::SearchParams params(flann::FLANN_CHECKS_UNLIMITED, 0.0f, false);
   const Points<D>& p = impl_->points;
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(detail::thread_count(threads))
   {
     Index hint = -1;  // the nearest point of this thread's previous query
 #pragma omp for schedule(static)
@@ -145,7 +146,7 @@ void NearestPointIndex<D>::query_k(const Points<D>& queries, int k, LargeVector<
   // In Z-order, each query's k nearest lie within the previous one's k-th distance plus the
   // step between them: a tight bound from the start of the search.
   const std::vector<Index> order = z_order<D>(queries);
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(detail::thread_count(threads))
   {
     std::vector<double> dist(std::size_t(kk), 0.0);
     std::vector<std::size_t> index(std::size_t(kk), 0);

@@ -3,6 +3,7 @@
 #include "geometry/self_intersections.h"
 
 #include "geometry/facet_intersection.h"
+#include "thread_count.h"
 
 #include <omp.h>
 
@@ -48,7 +49,7 @@ template <int D>
 std::vector<typename SelfIntersections<D>::Pair> SelfIntersections<D>::pairs(const Points<D>& x, const std::vector<char>& among,
                                                                              int threads) const {
   const std::int64_t n = std::int64_t(facets_.size());
-  std::vector<std::vector<Pair>> per_thread(std::size_t(threads > 0 ? threads : omp_get_max_threads()));
+  std::vector<std::vector<Pair>> per_thread(std::size_t(thread_count(threads)));
 #pragma omp parallel num_threads(int(per_thread.size()))
   {
     std::vector<Pair>& mine = per_thread[std::size_t(omp_get_thread_num())];

@@ -5,6 +5,7 @@
 #include "mesh/adaptive_refinement.h"
 
 #include "mesh/refinement_budget.h"
+#include "thread_count.h"
 
 #include "sampling/z_order.h"
 
@@ -103,7 +104,7 @@ void leaves_from(const KuhnBisectionForest<D>& forest, Index first, double h_min
   const long n = std::max(0L, long(forest.simplices().size()) - long(first));
   auto listed = [&](long i) { return forest.is_leaf(first + Index(i)) && forest.size(first + Index(i)) > h_min; };
   std::vector<std::size_t> start;
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(thread_count(threads))
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
@@ -170,7 +171,7 @@ class NearbyLargestSize {
       m = std::max(m, local[i]);
     }
     const long n = long(points.size());
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(thread_count(threads))
     {
       std::uint64_t last = ~std::uint64_t(0);
       double last_value = 0.0;
@@ -223,7 +224,7 @@ std::vector<Certain> certain_outcomes(const KuhnBisectionForest<D>& forest, cons
                                       const NearbyLargestSize<D>& nearby) {
   const long n = long(cand.nodes.size());
   std::vector<Certain> certain(cand.nodes.size(), Certain::no);
-#pragma omp parallel for schedule(static) num_threads(o.threads > 0 ? o.threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(thread_count(o.threads))
   for (long i = 0; i < n; ++i) {
     const std::size_t c = std::size_t(i);
     const Index parent = forest.simplices()[cand.nodes[c]].parent;

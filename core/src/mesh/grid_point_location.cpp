@@ -5,6 +5,8 @@
 /// point tested against the simplices of its bucket.
 #include "mesh/point_location.h"
 
+#include "thread_count.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -66,7 +68,7 @@ std::vector<Location<D>> locate_all(const SimplexMesh<D>& mesh, const Points<D>&
     }
   }
   const long np = long(points.size());
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
   for (long q = 0; q < np; ++q) {
     const Vec<D>& p = points[std::size_t(q)];
     if (!p.allFinite()) continue;

@@ -3,6 +3,8 @@
 /// @brief Point location by descent of the Kuhn bisection forest.
 #include "mesh/point_location.h"
 
+#include "thread_count.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -66,7 +68,7 @@ std::vector<Location<D>> locate_all(const AdaptiveMesh<D>& mesh, const Points<D>
                                     int threads) {
   std::vector<Location<D>> out(points.size());
   const long n = long(points.size());
-#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(static) num_threads(detail::thread_count(threads))
   for (long i = 0; i < n; ++i) out[i] = locate(mesh, points[i]);
   return out;
 }

@@ -3,6 +3,7 @@
 #include "lsrecon/core/simplex_geometry.h"
 
 #include "lsrecon/core/errors.h"
+#include "thread_count.h"
 
 #include <Eigen/LU>
 
@@ -55,7 +56,7 @@ VertexNeighbours neighbours_from_balls(const SimplexMesh<D>& mesh, const LargeVe
       for (std::size_t v = 0; v < nv; ++v) g.offsets[v + 1] += g.offsets[v];
       g.neighbours.resize(std::size_t(g.offsets[nv]));
     }
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel num_threads(detail::thread_count(threads))
     {
       std::vector<Index> stamp(nv, -1), row;
 #pragma omp for schedule(static)

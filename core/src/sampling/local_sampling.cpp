@@ -5,6 +5,7 @@
 #include "sampling/isolated_points.h"
 #include "sampling/spacing_over_gaps.h"
 #include "sampling/tile_runs.h"
+#include "thread_count.h"
 
 #include <algorithm>
 #include <cmath>
@@ -169,7 +170,7 @@ LocalSampling<D> estimate_local_sampling(const NearestPointIndex<D>& data, int t
                                          const Progress& progress, const SamplingTiles& tiling, ScanLines scan_lines,
                                          double isolated_factor) {
   constexpr int k = LocalSampling<D>::kNeighbours;
-  const int t = threads > 0 ? threads : omp_get_max_threads();
+  const int t = detail::thread_count(threads);
   const Points<D>& p = data.points();
   const TileRuns tiles(p.size(), tiling);
   const std::size_t first = tiles.first();

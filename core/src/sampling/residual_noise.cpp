@@ -3,6 +3,7 @@
 #include "sampling/residual_noise.h"
 
 #include "sampling/local_sampling.h"
+#include "thread_count.h"
 
 #include <Eigen/Cholesky>
 
@@ -61,7 +62,7 @@ std::vector<double> residual_noise(const Points<D>& p, const Points<D>& normals,
   const long n = long(p.size());
   std::vector<double> noise(p.size(), 0.0);
   if (k < HeightField<D>::kTerms + 3) return noise;
-  const int t = threads > 0 ? threads : omp_get_max_threads();
+  const int t = detail::thread_count(threads);
   std::vector<double> raw(p.size());
 #pragma omp parallel for schedule(static) num_threads(t)
   for (long i = 0; i < n; ++i) raw[std::size_t(i)] = quadric_residual<D>(p, normals, &nearest[std::size_t(i) * k], k, std::size_t(i));

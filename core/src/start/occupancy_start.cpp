@@ -5,6 +5,7 @@
 #include "sampling/local_sampling.h"
 #include "start/normal_propagation.h"
 #include "start/winding_number.h"
+#include "thread_count.h"
 
 #include <omp.h>
 
@@ -46,7 +47,7 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
   for (int pass = 0; pass < kConsistencyPasses; ++pass) {
     const WindingNumber<D> w(points, outward, areas, radii);
     std::size_t flips = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : flips) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : flips) num_threads(thread_count(threads))
     for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
       const auto p = std::size_t(i);
       const Vec<D> probe = 2.0 * radii[p] * outward[p];
@@ -73,7 +74,7 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
   make_consistent(points, outward, area, spacing, threads);
   const WindingNumber<D> w(points, outward, area, spacing);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(threads))
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(vertices.size()); ++v) u[v] = 0.5 - w.at(vertices[std::size_t(v)]);
   return u;
 }

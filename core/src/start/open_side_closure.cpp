@@ -6,6 +6,7 @@
 #include "start/outside_flood_fill.h"
 #include "start/normal_propagation.h"
 #include "start/winding_number.h"
+#include "thread_count.h"
 
 #include "sampling/local_sampling.h"
 
@@ -143,7 +144,7 @@ class FloodSides {
     const std::size_t np = points.size();
     plus.assign(np, kInf);
     minus.assign(np, kInf);
-#pragma omp parallel num_threads(threads_ > 0 ? threads_ : omp_get_max_threads())
+#pragma omp parallel num_threads(thread_count(threads_))
     {
       std::vector<Index> found;
 #pragma omp for schedule(dynamic, 256)
@@ -202,7 +203,7 @@ bool closed_up_to_holes(const SimplexMesh<D>& mesh, const Points<D>& points, con
   const WindingNumber<D> winding(points, oriented, area);
   const std::size_t nv = mesh.vertices.size();
   std::vector<double> w(nv, 0.0);
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(threads))
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(nv); ++v) {
     if (reached[std::size_t(v)]) w[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]);
   }
@@ -299,7 +300,7 @@ OpenSides close_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& n
   const WindingNumber<D> winding(points, outward, area);
   const double pocket_winding = single_view ? kSingleViewWinding : 0.5;
   std::vector<char> pocket(nv, 0);
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(threads))
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(nv); ++v) {
     if (reached[std::size_t(v)]) pocket[std::size_t(v)] = winding.at(mesh.vertices[std::size_t(v)]) > pocket_winding;
   }

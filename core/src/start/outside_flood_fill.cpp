@@ -2,32 +2,9 @@
 /// @file outside_flood_fill.cpp
 #include "start/outside_flood_fill.h"
 
-#include <numeric>
+#include "graph/disjoint_sets.h"
 
 namespace lsr {
-namespace {
-
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index(0)); }
-  Index find(Index x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];  // path halving
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(Index a, Index b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // deterministic roots
-  }
-
- private:
-  std::vector<Index> parent_;
-};
-
-}  // namespace
 
 template <int D>
 bool on_wall(const Vec<D>& x) {
@@ -40,7 +17,7 @@ bool on_wall(const Vec<D>& x) {
 template <int D>
 std::vector<Index> vertex_components(const SimplexMesh<D>& mesh, const std::vector<char>& member) {
   const std::size_t n = mesh.vertices.size();
-  DisjointSets sets(n);
+  detail::DisjointSets sets(n);
   for (const auto& s : mesh.simplices) {
     for (int i = 0; i <= D; ++i) {
       if (!member[s[i]]) continue;

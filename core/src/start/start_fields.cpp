@@ -6,6 +6,7 @@
 #include "start/nested_outsides.h"
 #include "start/occupancy_start.h"
 #include "start/open_side_closure.h"
+#include "thread_count.h"
 
 #include "evolution/renormalization.h"
 #include "lsrecon/core/errors.h"
@@ -130,7 +131,7 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
   const std::size_t nv = mesh.vertices.size();
   u.resize(Eigen::Index(nv));
   if (custom_start) {
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(o.limits.threads > 0 ? o.limits.threads : omp_get_max_threads())
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(o.limits.threads))
     for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nv); ++i) {
       try {  // an exception must not leave an OpenMP region: NaN, refused just below
         u[i] = (*custom_start)(box.from_unit(mesh.vertices[std::size_t(i)])) * box.scale();

@@ -2,6 +2,8 @@
 /// @file tangent_discs.cpp
 #include "start/tangent_discs.h"
 
+#include "thread_count.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -38,7 +40,7 @@ std::vector<double> tangent_disc_distance(const NearestPointIndex<D>& data, cons
                                           double radius, const Points<D>& queries,
                                           const std::vector<double>& point_distance, const std::vector<double>& cap,
                                           int threads, bool rims_only) {
-  const int t = threads > 0 ? threads : omp_get_max_threads();
+  const int t = detail::thread_count(threads);
   // The points that carry a disc, indexed apart when they are the rims only.
   std::vector<Index> carrier;
   for (std::size_t i = 0; i < data.points().size(); ++i) {

@@ -11,6 +11,7 @@
 
 #include "lsrecon/core/errors.h"
 #include "lsrecon/core/large_array_allocator.h"
+#include "thread_count.h"
 
 #include <algorithm>
 #include <cmath>
@@ -175,7 +176,7 @@ LevelSetMesh<D> extract_zero_level_set(const SimplexMesh<D>& mesh, const std::ve
                          "the solver diverged or the field was not initialised");
     }
   }
-  threads = threads > 0 ? threads : omp_get_max_threads();
+  threads = detail::thread_count(threads);
   // Facets in simplex order: counted per fixed block of simplices, then written in parallel.
   constexpr long kBlock = 16384;
   LevelSetMesh<D> out;

@@ -2,29 +2,16 @@
 /// @file surface_topology.cpp
 #include "surface/surface_topology.h"
 
+#include "graph/disjoint_sets.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <unordered_map>
 
 namespace lsr {
 namespace {
-
-struct UnionFind {
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-  std::vector<std::size_t> parent;
-};
 
 std::uint64_t edge_key(Index a, Index b) {
   if (a > b) std::swap(a, b);
@@ -45,7 +32,7 @@ SurfaceTopology analyze_surface(const Points<3>& vertices,
   const std::size_t nf = triangles.size();
   std::unordered_map<std::uint64_t, EdgeUse> edges;
   edges.reserve(nf * 2);
-  UnionFind faces(nf);
+  detail::DisjointSets faces(nf);
   for (std::size_t f = 0; f < nf; ++f) {
     const auto& tri = triangles[f];
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) ++t.degenerate_triangles;
@@ -58,7 +45,7 @@ SurfaceTopology analyze_surface(const Points<3>& vertices,
       if (e.first_face < 0) {
         e.first_face = Index(f);
       } else {
-        faces.unite(f, std::size_t(e.first_face));
+        faces.unite(Index(f), e.first_face);
       }
     }
     const Vec<3>& p = vertices[tri[0]];
@@ -83,17 +70,17 @@ SurfaceTopology analyze_surface(const Points<3>& vertices,
   for (std::size_t v = 0; v < around.size() && t.vertex_manifold; ++v) {
     const auto& fan = around[v];
     if (fan.size() < 2) continue;
-    UnionFind local(fan.size());
+    detail::DisjointSets local(fan.size());
     std::map<Index, std::size_t> by_other;  // other endpoint of an edge at v -> a face using it
     for (std::size_t i = 0; i < fan.size(); ++i) {
       for (Index w : triangles[fan[i]]) {
         if (w == Index(v)) continue;
         auto [it, inserted] = by_other.emplace(w, i);
-        if (!inserted) local.unite(i, it->second);
+        if (!inserted) local.unite(Index(i), Index(it->second));
       }
     }
     for (std::size_t i = 1; i < fan.size(); ++i) {
-      if (local.find(i) != 0) t.vertex_manifold = false;
+      if (local.find(Index(i)) != 0) t.vertex_manifold = false;
     }
   }
 
@@ -101,14 +88,14 @@ SurfaceTopology analyze_surface(const Points<3>& vertices,
   std::map<std::size_t, std::array<long, 3>> vef;  // component root -> (V, E, F)
   std::vector<std::size_t> vertex_component(vertices.size(), SIZE_MAX);
   for (std::size_t f = 0; f < nf; ++f) {
-    const std::size_t c = faces.find(f);
+    const auto c = std::size_t(faces.find(Index(f)));
     ++vef[c][2];
     for (Index v : triangles[f]) vertex_component[v] = c;
   }
   for (std::size_t v = 0; v < vertices.size(); ++v) {
     if (vertex_component[v] != SIZE_MAX) ++vef[vertex_component[v]][0];
   }
-  for (const auto& [key, e] : edges) ++vef[faces.find(std::size_t(e.first_face))][1];
+  for (const auto& [key, e] : edges) ++vef[std::size_t(faces.find(e.first_face))][1];
   t.components = int(vef.size());
   for (const auto& [root, c] : vef) t.genus.push_back(int((2 - (c[0] - c[1] + c[2])) / 2));
   return t;

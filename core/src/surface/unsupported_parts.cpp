@@ -3,6 +3,7 @@
 #include "surface/unsupported_parts.h"
 
 #include "geometry/nearest_point_index.h"
+#include "graph/disjoint_sets.h"
 #include "start/outside_flood_fill.h"
 
 #include <algorithm>
@@ -60,18 +61,11 @@ template <int D>
 std::size_t drop_unsupported_pieces(LevelSetMesh<D>& surface, const Points<D>& points, int threads) {
   const std::size_t nv = surface.vertices.size();
   if (nv == 0 || points.empty()) return 0;
-  std::vector<Index> root(nv);
-  for (std::size_t v = 0; v < nv; ++v) root[v] = Index(v);
-  const auto find = [&](Index v) {
-    while (root[std::size_t(v)] != v) v = root[std::size_t(v)] = root[std::size_t(root[std::size_t(v)])];
-    return v;
-  };
+  detail::DisjointSets sets(nv);
   for (const auto& f : surface.facets) {
-    for (int k = 1; k < D; ++k) {
-      const Index a = find(f[0]), b = find(f[std::size_t(k)]);
-      if (a != b) root[std::size_t(std::max(a, b))] = std::min(a, b);
-    }
+    for (int k = 1; k < D; ++k) sets.unite(f[0], f[std::size_t(k)]);
   }
+  const auto find = [&](Index v) { return sets.find(v); };
   std::vector<Index> owned(nv, 0);  // by root
   std::size_t pieces = 0;
   for (std::size_t v = 0; v < nv; ++v) pieces += find(Index(v)) == Index(v);
