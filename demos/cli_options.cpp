@@ -20,6 +20,7 @@ Reconstructs a closed surface (3D) or closed curves (2D) from unoriented points 
 level-set method of Claisse & Frey (2011). No normals needed.
 
 INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] or x,y,z per line), .obj .off .stl (vertices),
+        .conf (range scans registered as in the Stanford 3D Scanning Repository),
         .pgm .ppm .pbm .png (2D: every dark pixel is a point)
 OUTPUT  3D: .ply .obj .off (double precision) .stl .vtk (float)
         2D: .svg (drawing) or .txt (one closed polyline per loop)

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   bool overlay = false;
   lsr::demos::CommandLine line("lsrecon-view", LSRECON_VERSION,
                                "usage: lsrecon-view CLOUD [RESULT] [options]\n\n"
-                               "  CLOUD   any point file lsrecon reads (.pcd .ply .xyz .txt .obj .off .stl)\n"
+                               "  CLOUD   any point file lsrecon reads (.pcd .ply .xyz .txt .obj .off .stl .conf)\n"
                                "  RESULT  a mesh lsrecon wrote (.ply .obj .off .stl .vtk) or its 2D curves (.txt)\n");
   line.group("view")
       .flag("overlay", overlay, "the cloud over the result in one view (default: side by side)")

@@ -35,7 +35,7 @@ const std::vector<Format>& formats() {
       {"stl", {R::point_input, R::mesh_output}}, {"pgm", {R::image_input}}, {"ppm", {R::image_input}},
       {"pbm", {R::image_input}}, {"pnm", {R::image_input}}, {"png", {R::image_input}}, {"svg", {R::curve_output}},
       {"vtk", {R::mesh_output}}, {"mesh", {R::volume_output}}, {"msh", {R::volume_output}},
-      {"vtu", {R::volume_output}}};
+      {"vtu", {R::volume_output}}, {"conf", {R::point_input}}};
   return table;
 }
 

@@ -22,4 +22,9 @@ PointFile read_pcd_points(const std::string& path);
 /// @throw lsr::Error as read_pcd_points.
 PointFile read_ply_points(const std::string& path, FileShare share = {});
 
+/// @brief The points of the range scans a Stanford .conf file lists, each mapped by its
+/// registration (registered_scans.cpp).
+/// @throw lsr::Error for a malformed line, a scan that cannot be read, or no scan at all.
+PointFile read_registered_scans(const std::string& path);
+
 }  // namespace lsr::adapters::detail

@@ -104,6 +104,7 @@ PointFile read_point_file(const std::string& path, FileShare share) {
   }
   if (ext == "pcd") return detail::read_pcd_points(path);
   if (ext == "ply") return detail::read_ply_points(path, share);
+  if (ext == "conf") return detail::read_registered_scans(path);
   check_declared_size(path);
   if (ext == "obj" || ext == "off" || ext == "stl") {
     PointFile out;

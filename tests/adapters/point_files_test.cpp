@@ -338,3 +338,38 @@ TEST_F(PointFiles, EveryMeshFormatLsreconWritesIsReadBack) {
 
 }  // namespace
 }  // namespace lsr::adapters
+
+namespace lsr::adapters {
+namespace {
+
+// Range scans registered by a Stanford .conf: each scan's points p become R(q)^T p + t. A
+// quarter turn about z (q = (0, 0, sin 45, cos 45)) maps (1, 0, 0) to R^T (1, 0, 0) = (0, -1, 0);
+// the identity leaves the other scan where it is. Relative paths are the .conf's folder's.
+TEST_F(PointFiles, RangeScansAreReadRegisteredByTheirConf) {
+  file("a.xyz", [](std::ofstream& f) { f << "1 0 0\n0 2 0\n"; });
+  fs::create_directories(dir_ / "views");
+  file("views/b.xyz", [](std::ofstream& f) { f << "0 0 3\n"; });
+  const double s = std::sqrt(0.5);
+  const std::string conf = file("scans.conf", [&](std::ofstream& f) {
+    f.precision(17);
+    f << "camera 0 0 0 0 0 0 1\nbmesh a.xyz 10 20 30 0 0 " << s << ' ' << s << "\nbmesh views/b.xyz 0 0 0 0 0 0 1\n";
+  });
+  const PointFile read = read_point_file(conf);
+  ASSERT_EQ(read.points.size(), 3u);
+  const Points<3> expected = {Vec<3>(10, 19, 30), Vec<3>(12, 20, 30), Vec<3>(0, 0, 3)};
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_LT((read.points[i] - expected[i]).norm(), 1e-12) << i << ": " << read.points[i].transpose();
+  // Bad lines and bad scans: refused, naming the file and line.
+  const std::string short_line = file("short.conf", [](std::ofstream& f) { f << "bmesh a.xyz 1 2 3\n"; });
+  EXPECT_NE(refusal(short_line).find("short.conf:1: expected a file name and 7 numbers"), std::string::npos) << refusal(short_line);
+  const std::string zero = file("zero.conf", [](std::ofstream& f) { f << "bmesh a.xyz 0 0 0 0 0 0 0\n"; });
+  EXPECT_NE(refusal(zero).find("quaternion"), std::string::npos) << refusal(zero);
+  const std::string missing = file("missing.conf", [](std::ofstream& f) { f << "bmesh none.xyz 0 0 0 0 0 0 1\n"; });
+  EXPECT_NE(refusal(missing).find("none.xyz"), std::string::npos) << refusal(missing);
+  const std::string nested = file("nested.conf", [](std::ofstream& f) { f << "bmesh scans.conf 0 0 0 0 0 0 1\n"; });
+  EXPECT_NE(refusal(nested).find("not other .conf files"), std::string::npos) << refusal(nested);
+  const std::string empty = file("empty.conf", [](std::ofstream& f) { f << "camera 0 0 0 0 0 0 1\n"; });
+  EXPECT_NE(refusal(empty).find("lists no scan"), std::string::npos) << refusal(empty);
+}
+
+}  // namespace
+}  // namespace lsr::adapters

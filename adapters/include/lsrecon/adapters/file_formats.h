@@ -14,7 +14,7 @@ std::string file_extension(const std::string& path);
 /// @brief What lsrecon does with a file format: one table for the readers, the writers, the
 /// command line and the viewer.
 enum class FileRole {
-  point_input,   ///< xyz txt xy pts pcd ply obj off stl
+  point_input,   ///< xyz txt xy pts pcd ply obj off stl conf (registered range scans)
   image_input,   ///< pgm ppm pbm pnm png (2D: dark pixels)
   mesh_output,   ///< ply obj off stl vtk
   curve_output,  ///< svg txt

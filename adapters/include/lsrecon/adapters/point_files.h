@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file point_files.h
 /// @brief Reading point clouds from files: PCD and PLY (PCL IO), .xyz / .txt (x y [z] per
-/// line), OBJ / OFF / STL vertices (OpenMesh IO); writing them as lsrecon reads them back.
+/// line), OBJ / OFF / STL vertices (OpenMesh IO), range scans registered by a Stanford .conf;
+/// writing them as lsrecon reads them back.
 #pragma once
 
 #include "lsrecon/adapters/file_formats.h"
