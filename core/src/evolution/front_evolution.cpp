@@ -145,7 +145,7 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
         // Once: on from the restart's field, measured afresh.
         restarted = true;
         r.stalled = false;
-        u = restart(best_);
+        u = restart();
         stall = StallDetector(schedule_.stall);
         front_distance = std::numeric_limits<double>::infinity();
       }

@@ -65,9 +65,9 @@ class FrontEvolution {
   /// cancels. Fills the loop's fields of `r`: status, stalled, iterations, best_iteration,
   /// unreached_points, residual_history (in input units: times `median_eps` / `box_scale`),
   /// solver_iterations. On the first stall short of the stopping test, if given, the loop
-  /// goes on from `restart(best())` (a field renormalised near its front); the best iterate
-  /// stays the best of both.
-  using Restart = std::function<Eigen::VectorXd(const Eigen::VectorXd& best)>;
+  /// goes on from `restart()` (a field renormalised near its front); the best iterate stays
+  /// the best of both.
+  using Restart = std::function<Eigen::VectorXd()>;
   void run(Eigen::VectorXd u, Eigen::VectorXd& d, ReconstructionResult<D>& r, const Progress& progress, StageClock& clock,
            double median_eps, double box_scale, const Restart& restart = {});
 

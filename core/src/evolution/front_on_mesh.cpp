@@ -6,8 +6,8 @@
 #include "evolution/evolution_settings.h"
 #include "evolution/front_evolution.h"
 #include "evolution/pinning.h"
-#include "mesh/vertices_near.h"
 #include "evolution/renormalization.h"
+#include "mesh/vertices_near.h"
 #include "start/occupancy_start.h"
 #include "start/start_fields.h"
 
@@ -92,7 +92,7 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   // needs the whole cloud.
   typename FrontEvolution<D>::Restart restart;
   if (o.evolution.two_sided && !tested) {
-    restart = [&](const Eigen::VectorXd&) {
+    restart = [&] {
       Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, sampling.spacing, o.limits.threads);
       renormalize(mesh, f.neighbours, u, settings.schedule.band, o.limits.threads);
       return u;

@@ -99,7 +99,6 @@ Vec<D> row_block_times(const P1Operators<D>& ops, Index i, const Eigen::VectorXd
   return sum;
 }
 
-
 // out[j] = sum over the entries (i, j) of G's block pattern of f(i, G(D i .. D i + D - 1, j)),
 // for every j: G^T-like products scattered from G's rows, read in storage order. Each thread
 // owns the columns of its range of rows; the terms its rows give to other ranges' columns are

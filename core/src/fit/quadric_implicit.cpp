@@ -16,7 +16,6 @@
 namespace lsr {
 namespace {
 
-
 // The PCA neighbourhood's radius in spacings: the k-th neighbour's distance grows like k along
 // a curve and like sqrt(k) on a surface.
 template <int D>

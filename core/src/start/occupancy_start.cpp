@@ -7,8 +7,6 @@
 #include "start/winding_number.h"
 #include "thread_count.h"
 
-#include <omp.h>
-
 namespace lsr::detail {
 
 template <int D>
