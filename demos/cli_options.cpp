@@ -24,6 +24,10 @@ INPUT   .pcd .ply (point clouds), .xyz .txt (x y [z] or x,y,z per line), .obj .o
         .pgm .ppm .pbm .png (2D: every dark pixel is a point)
 OUTPUT  3D: .ply .obj .off (double precision) .stl .vtk (float)
         2D: .svg (drawing) or .txt (one closed polyline per loop)
+        .ply also holds each vertex's distance to the nearest data point (property "distance",
+        input units; with --smooth, before smoothing): large where the surface is a guess (a
+        side no view saw, a spanned hole). To keep only what the data support, drop the faces
+        with a vertex farther than a few spacings (the report's spacing_input_units).
 SHAPE   generated clouds: i.i.d. random samples of sphere torus double-torus triple-torus
         trefoil linked-rings cup limb two-spheres (3D); star three-shapes (2D)
 

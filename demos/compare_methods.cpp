@@ -118,13 +118,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +
-               std::to_string(ls.getStatus().iterations) + " steps;" +
-               (ls.getStatus().sealed_cavities > 0
-                    ? " sealed " + std::to_string(ls.getStatus().sealed_cavities) +
-                          (ls.getStatus().sealed_cavities == 1 ? " cavity;" : " cavities;")
-                    : std::string()) +
-               (ls.getStatus().open_side_points > 0 ? " open sides closed;" : "") + " " +
-               std::to_string(ls.getStatus().mesh_vertices) + " mesh vertices;" + stage_breakdown(ls.getStatus().stage_seconds);
+               std::to_string(ls.getStatus().iterations) + " steps; " + std::to_string(ls.getStatus().mesh_vertices) + " mesh vertices;" + stage_breakdown(ls.getStatus().stage_seconds);
     out.residuals = ls.getStatus().residual_history;
     for (double& r : out.residuals) r /= ls.getStatus().tolerance;
     if (method != "poisson8-lsrecon") {

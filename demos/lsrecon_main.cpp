@@ -353,6 +353,7 @@ int run(const Cli& c) {
   auto write = [&](const lsr::ReconstructionResult<3>& r, const std::string& output, lsr::demos::Stopwatch& timer,
                    OuterStages& times) {
     lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(r.surface, r.normals);
+    lsr::adapters::set_distance_to_data(mesh, r.distance_to_data);
     if (c.decimate > 0) lsr::adapters::decimate(mesh, std::size_t(c.decimate));
     lsr::adapters::smooth(mesh, c.smooth);
     times.emplace_back("postprocess", timer.lap());

@@ -27,12 +27,15 @@ void write_ply(const TriMesh& mesh, std::ofstream& out) {
       << "comment lsrecon\nelement vertex " << mesh.n_vertices() << "\nproperty double x\nproperty double y\n"
       << "property double z\n";
   if (normals) out << "property double nx\nproperty double ny\nproperty double nz\n";
+  const auto distance = distance_to_data(mesh);
+  if (distance) out << "property double " << kDistanceProperty << "\n";
   out << "element face " << mesh.n_faces() << "\nproperty list uchar int vertex_indices\nend_header\n";
   for (const auto& v : mesh.vertices()) {
     for (int k = 0; k < 3; ++k) put(out, mesh.point(v)[k]);
     if (normals) {
       for (int k = 0; k < 3; ++k) put(out, mesh.normal(v)[k]);
     }
+    if (distance) put(out, mesh.property(*distance, v));
   }
   for (const auto& f : mesh.faces()) {
     put(out, std::uint8_t(3));

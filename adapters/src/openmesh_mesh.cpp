@@ -47,6 +47,19 @@ TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals) {
   return mesh;
 }
 
+void set_distance_to_data(TriMesh& mesh, const std::vector<double>& distance) {
+  if (distance.size() != mesh.n_vertices()) throw Error("one distance per vertex expected", "pass ReconstructionResult::distance_to_data");
+  OpenMesh::VPropHandleT<double> h;
+  if (!mesh.get_property_handle(h, kDistanceProperty)) mesh.add_property(h, kDistanceProperty);
+  for (const auto& v : mesh.vertices()) mesh.property(h, v) = distance[std::size_t(v.idx())];
+}
+
+std::optional<OpenMesh::VPropHandleT<double>> distance_to_data(const TriMesh& mesh) {
+  OpenMesh::VPropHandleT<double> h;
+  if (!mesh.get_property_handle(h, kDistanceProperty)) return std::nullopt;
+  return h;
+}
+
 LevelSetMesh<3> from_openmesh(const TriMesh& mesh) {
   LevelSetMesh<3> out;
   for (const auto& v : mesh.vertices()) {

@@ -111,11 +111,11 @@ Points<D> surface_in_tiles(SampledData<D>& sampled, const ReconstructionOptions&
 }
 
 template <int D>
-ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& o,
+ReconstructionResult<D> run_pipeline(const Points<D>& input, const ReconstructionOptions& given,
                                      const ProgressCallback& callback, const SignedDistance<D>* custom_start) {
-  check_options(o);
+  check_options(given);
   // Before anything is allocated for the points.
-  if (o.limits.max_vertices <= 0) require_cloud_fits<D>(o, input.size());
+  if (given.limits.max_vertices <= 0) require_cloud_fits<D>(given, input.size());
   ReconstructionResult<D> r;
   StageClock clock(r.seconds, r.stages);
   const Progress progress(callback);
@@ -125,23 +125,24 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
   // are denser than the mesh resolves, the rest reads a sample at its size.
   progress.update("unit box", -1.0);
   r.input_points = input.size();
-  const double hole_radius = o.sampling.hole_radius >= 0.0 ? o.sampling.hole_radius : automatic_defaults(D).hole_radius;
   // In 3D only the rim points carry discs (LocalSampling::rim); in 2D, where spanning is off
   // unless asked for, every point does.
   const bool rims_only = D == 3;
   // The anisotropic mesh needs every point's curvature (its height field); the rims are still
   // found for the discs.
-  const bool anisotropic = o.mesh.anisotropic;
-  const HeightFieldsAt spanning = hole_radius <= 0.0 ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
+  const bool anisotropic = given.mesh.anisotropic;
+  const double given_radius = given.sampling.hole_radius;  // its unit does not change its sign
+  const bool spans = given_radius > 0.0 || (given_radius < 0.0 && automatic_defaults(D).hole_radius > 0.0);
+  const HeightFieldsAt spanning = !spans ? HeightFieldsAt::none : rims_only ? HeightFieldsAt::rims : HeightFieldsAt::all;
   const HeightFieldsAt fields = !anisotropic                       ? spanning
                                 : spanning == HeightFieldsAt::rims ? HeightFieldsAt::all_and_rims
                                                                    : HeightFieldsAt::all;
   std::optional<SampledData<D>> sampled;
-  if (o.limits.exchange && o.limits.exchange->workers() > 1) {
-    if constexpr (D == 3) sampled = shared_sampled_data(input, o, fields, progress, r, clock);
+  if (given.limits.exchange && given.limits.exchange->workers() > 1) {
+    if constexpr (D == 3) sampled = shared_sampled_data(input, given, fields, progress, r, clock);
     if constexpr (D == 2) throw InvalidInput("curves are reconstructed in one process", "reconstruct 2D clouds without workers");
   } else {
-    sampled = sampled_data(input, o, fields, progress, r, clock);
+    sampled = sampled_data(input, given, fields, progress, r, clock);
   }
   clock.end("sampling");
   if (!sampled) {
@@ -149,6 +150,8 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     return r;
   }
   const UnitBoxTransform<D>& box = sampled->box;
+  const ReconstructionOptions o = in_unit_box(given, box.scale());
+  const double hole_radius = o.sampling.hole_radius >= 0.0 ? o.sampling.hole_radius : automatic_defaults(D).hole_radius;
   r.noise = sampled->noise / box.scale();
   r.scan_lines = sampled->sampling.scan_lines;
   r.spacing = sampled->spacing / box.scale();
@@ -173,6 +176,10 @@ ReconstructionResult<D> run_pipeline(const Points<D>& input, const Reconstructio
     r.volume.vertices[std::size_t(r.volume.interface_offset) + i] = r.surface.vertices[i];
   }
   clock.end("embed");
+
+  // 12. How far each vertex lies from the data: large where the surface is a guess.
+  sampled->data.query(box.to_unit(r.surface.vertices), r.distance_to_data, nullptr, o.limits.threads);
+  for (double& d : r.distance_to_data) d /= box.scale();
   if constexpr (D == 2) r.loops = closed_loops(r.surface);
   return r;
 }

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /// @file consumer.cpp
 /// @brief Uses the installed package as a user would: a generated cloud through
-/// pcl::LevelSetReconstruction. Exit 0 when the result is a converged, non-empty mesh.
+/// pcl::LevelSetReconstruction, including PCL and lsrecon's PCL header only. Exit 0 when the result is a converged, non-empty mesh.
 #include <lsrecon/pcl/level_set_reconstruction.h>
 
 #include <pcl/point_types.h>
+
+#ifdef OM_VERSION
+#error "lsrecon's PCL header included OpenMesh: the PCL class must not need it"
+#endif
 
 #include <cmath>
 #include <cstdio>
@@ -18,7 +22,7 @@ int main() {
   }
   pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
   ls.setInputCloud(cloud);
-  ls.setResolution(32);
+  ls.setResolution(0.08);  // cloud units: the sphere has radius 1
   pcl::PolygonMesh mesh;
   ls.reconstruct(mesh);
   std::printf("consumer: %zu triangles, converged %d\n", mesh.polygons.size(), int(ls.getStatus().converged));

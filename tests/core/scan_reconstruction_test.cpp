@@ -4,12 +4,14 @@
 /// dense lines with wide gaps between them, range noise and misregistered views, from all sides
 /// and from above only (the underside unseen, closed by the front).
 #include "checks/exact_self_intersections.h"
+#include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
 #include "lsrecon/testdata/simulated_scan.h"
 #include "surface/surface_topology.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace lsr {
@@ -97,6 +99,41 @@ TEST(ScanReconstruction, AGrazingInnerWallSeenFromAboveLeavesTheHoleOpen) {
   const SurfaceTopology rings = scan_topology("linked-rings", s, 2);
   EXPECT_TRUE(rings.watertight);
   EXPECT_EQ(rings.genus, (std::vector<int>{1, 1}));
+}
+
+// A cup scanned from above: the front closes what no view saw (the underside, most of the
+// floor inside), and distance_to_data says where. Trimmed at the widest gap the solver lets the
+// front span between samples (gap_factor spacings, SamplingOptions::gap_factor), the guess goes
+// and what the views saw stays: the surface passes within the tolerance (1 spacing) of all but
+// StoppingOptions::unreached_fraction of the points, and a vertex within a mesh size (< 1
+// spacing) of such a point is within 2 spacings of the data.
+TEST(ScanReconstruction, TrimmingByDistanceToDataKeepsWhatTheViewsSaw) {
+  const SampledShape scan = simulate_scan(make_test_shape("cup"), ScannerSettings{.from_above = true}, 2011);
+  const ReconstructionResult<3> r = reconstruct<3>(scan.points);
+  ASSERT_EQ(r.distance_to_data.size(), r.surface.vertices.size());
+  // The distance to every point; the solver's sample can only be farther (up to the rounding
+  // of the unit box's transform, a few ulps of the coordinates).
+  std::vector<double> exact;
+  NearestPointIndex<3>(scan.points).query(r.surface.vertices, exact);
+  for (std::size_t i = 0; i < exact.size(); ++i) EXPECT_GE(r.distance_to_data[i], exact[i] - 1e-12 * scan.diagonal);
+  const ReconstructionOptions defaults;
+  const double trim = defaults.sampling.gap_factor * r.spacing;
+  std::vector<char> kept(r.surface.vertices.size(), 0);
+  std::vector<std::array<Index, 3>> trimmed;
+  for (const auto& f : r.surface.facets) {
+    if (std::all_of(f.begin(), f.end(), [&](Index v) { return r.distance_to_data[std::size_t(v)] <= trim; })) {
+      trimmed.push_back(f);
+      for (const Index v : f) kept[std::size_t(v)] = 1;
+    }
+  }
+  const SurfaceTopology open = analyze_surface(r.surface.vertices, trimmed);
+  EXPECT_FALSE(open.watertight);  // the guess is gone
+  std::vector<Index> nearest;
+  std::vector<double> distance;
+  NearestPointIndex<3>(r.surface.vertices).query(scan.points, distance, &nearest);
+  std::size_t lost = 0;
+  for (const Index v : nearest) lost += !kept[std::size_t(v)];
+  EXPECT_LE(double(lost), defaults.stopping.unreached_fraction * double(scan.points.size()));
 }
 
 }  // namespace

@@ -3,16 +3,21 @@
 /// @brief pcl::LevelSetReconstruction used exactly like pcl::Poisson.
 #include "checks/exact_self_intersections.h"
 #include "lsrecon/adapters/pcl_mesh.h"
+#include "lsrecon/adapters/pcl_openmesh.h"
 #include "lsrecon/pcl/level_set_reconstruction.h"
 #include "lsrecon/testdata/analytic_shapes.h"
 #include "lsrecon/testdata/shape_corpus.h"
 #include "surface/surface_topology.h"
 
+#include <pcl/common/io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -39,7 +44,7 @@ template <typename PointT>
 void check_torus() {
   pcl::LevelSetReconstruction<PointT> ls;
   ls.setInputCloud(torus_cloud<PointT>(8000));
-  ls.setResolution(48);
+  ls.setResolution(0.07);  // cloud units: the torus's tube has radius 0.4
   pcl::PolygonMesh mesh;
   ls.reconstruct(mesh);
   ASSERT_TRUE(ls.getStatus().ok);
@@ -68,7 +73,7 @@ TEST(PclLevelSetReconstruction, PointNormalWorksAndReceivesNormals) {
   check_torus<pcl::PointNormal>();
   pcl::LevelSetReconstruction<pcl::PointNormal> ls;
   ls.setInputCloud(torus_cloud<pcl::PointNormal>(4000));
-  ls.setResolution(32);
+  ls.setResolution(0.1);
   pcl::PointCloud<pcl::PointNormal> points;
   std::vector<pcl::Vertices> polygons;
   ls.reconstruct(points, polygons);
@@ -85,17 +90,80 @@ TEST(PclLevelSetReconstruction, PointNormalWorksAndReceivesNormals) {
 
 TEST(PclLevelSetReconstruction, OpenMeshOutputIsAClosedMeshWithNormals) {
   pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
-  lsr::adapters::TriMesh mesh;
-  EXPECT_FALSE(ls.reconstruct(mesh));  // no input: logged, no crash
   ls.setInputCloud(torus_cloud<pcl::PointXYZ>(4000));
-  ls.setResolution(32);
-  ASSERT_TRUE(ls.reconstruct(mesh));
+  ls.setResolution(0.1);
+  pcl::PolygonMesh polygons;
+  ls.reconstruct(polygons);
+  const lsr::adapters::TriMesh mesh = lsr::adapters::to_openmesh(polygons);
   const lsr::LevelSetMesh<3> back = lsr::adapters::from_openmesh(mesh);
   const lsr::SurfaceTopology t = lsr::analyze_surface(back.vertices, back.facets);
   EXPECT_TRUE(t.watertight && t.oriented);
   EXPECT_EQ(t.genus, std::vector<int>{1});
   EXPECT_TRUE(mesh.has_vertex_normals());
+  EXPECT_TRUE(lsr::adapters::distance_to_data(mesh).has_value());
 }
+
+// Colours and intensities come from each vertex's nearest input point, and the distance to it
+// is that point's: checked against a brute-force search over the cloud.
+template <typename PointT>
+void check_fields_of_nearest_points() {
+  typename pcl::PointCloud<PointT>::Ptr cloud = torus_cloud<PointT>(3000);
+  for (std::size_t i = 0; i < cloud->size(); ++i) {  // a field that differs from point to point
+    if constexpr (pcl::traits::has_color_v<PointT>) (*cloud)[i].rgba = std::uint32_t(0xff000000u | (i * 2654435761u % 0xffffffu));
+    if constexpr (pcl::traits::has_intensity_v<PointT>) (*cloud)[i].intensity = float(i);
+  }
+  pcl::LevelSetReconstruction<PointT> ls;
+  ls.setInputCloud(cloud);
+  pcl::PolygonMesh mesh;
+  ls.reconstruct(mesh);
+  ASSERT_TRUE(ls.getStatus().ok);
+  pcl::PointCloud<PointT> vertices;
+  pcl::fromPCLPointCloud2(mesh.cloud, vertices);
+  const int distance_field = pcl::getFieldIndex(mesh.cloud, "distance");
+  ASSERT_GE(distance_field, 0);
+  ASSERT_FALSE(vertices.empty());
+  std::size_t same = 0;
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    std::vector<double> d(cloud->size());
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+      d[i] = ((*cloud)[i].getVector3fMap() - vertices[v].getVector3fMap()).template cast<double>().norm();
+    }
+    const double best = *std::min_element(d.begin(), d.end());
+    float distance = 0.0f;
+    std::memcpy(&distance, &mesh.cloud.data[v * mesh.cloud.point_step + mesh.cloud.fields[std::size_t(distance_field)].offset],
+                sizeof distance);
+    // float coordinates: the distances agree to a few float ulps of the coordinates (|x| < 2)
+    EXPECT_NEAR(distance, best, 1e-5);
+    // The fields of a nearest point (the sample has exact ties: it is symmetric).
+    bool found = false;
+    for (std::size_t i = 0; i < cloud->size() && !found; ++i) {
+      if (d[i] > best + 1e-6) continue;
+      bool equal = true;
+      if constexpr (pcl::traits::has_color_v<PointT>) equal = equal && vertices[v].rgba == (*cloud)[i].rgba;
+      if constexpr (pcl::traits::has_intensity_v<PointT>) equal = equal && vertices[v].intensity == (*cloud)[i].intensity;
+      found = equal;
+    }
+    same += found;
+  }
+  EXPECT_EQ(same, vertices.size());
+  // The same fields on the PointT output.
+  pcl::PointCloud<PointT> points;
+  std::vector<pcl::Vertices> polygons;
+  ls.reconstruct(points, polygons);
+  ASSERT_EQ(points.size(), vertices.size());
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if constexpr (pcl::traits::has_color_v<PointT>) {
+      EXPECT_EQ(points[v].rgba, vertices[v].rgba);
+    }
+    if constexpr (pcl::traits::has_intensity_v<PointT>) {
+      EXPECT_EQ(points[v].intensity, vertices[v].intensity);
+    }
+  }
+}
+
+TEST(PclLevelSetReconstruction, VerticesTakeTheColourOfTheNearestPoint) { check_fields_of_nearest_points<pcl::PointXYZRGB>(); }
+
+TEST(PclLevelSetReconstruction, VerticesTakeTheIntensityOfTheNearestPoint) { check_fields_of_nearest_points<pcl::PointXYZI>(); }
 
 TEST(PclLevelSetReconstruction, PlanarCloudGivesClosedLoopsInOrder) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr cloud(new pcl::PointCloud<pcl::PointXYZ>);
@@ -145,12 +213,12 @@ TEST(PclLevelSetReconstruction, MissingOrBadInputLeavesTheOutputEmpty) {
   pcl::PointCloud<pcl::PointXYZ>::Ptr sphere(new pcl::PointCloud<pcl::PointXYZ>);
   for (const auto& p : lsr::Sphere{lsr::Vec<3>(0, 0, 0), 1.0}.sample(2000)) sphere->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
   ls.setInputCloud(sphere);
-  ls.setMaximumMemory(1e6);  // 2,000 points at 1 KB and a 10,000-vertex mesh at 3 KB do not fit
+  ls.setMaxMemory(1e6);  // 2,000 points at 1 KB and a 10,000-vertex mesh at 3 KB do not fit
   ls.reconstruct(mesh);
   EXPECT_TRUE(mesh.polygons.empty());
   EXPECT_FALSE(ls.getStatus().ok);
   EXPECT_NE(ls.getStatus().message.find("memory limit"), std::string::npos) << ls.getStatus().message;
-  ls.setMaximumMemory(0.0);
+  ls.setMaxMemory(0.0);
   ls.reconstruct(mesh);
   EXPECT_TRUE(ls.getStatus().ok) << ls.getStatus().message;
   EXPECT_FALSE(mesh.polygons.empty());
@@ -163,9 +231,9 @@ TEST(PclLevelSetReconstruction, HonoursIndicesAndSetters) {
   pcl::LevelSetReconstruction<pcl::PointXYZ> ls;
   ls.setInputCloud(cloud);
   ls.setIndices(half);
-  ls.setResolution(32);
+  ls.setResolution(0.1);
   ls.setMaxIterations(1);  // the front's distance to the data is first measured at step 2
-  EXPECT_DOUBLE_EQ(ls.getResolution(), 32.0);
+  EXPECT_DOUBLE_EQ(ls.getResolution(), 0.1);
   pcl::PolygonMesh mesh;
   ls.reconstruct(mesh);
   EXPECT_TRUE(ls.getStatus().ok);
@@ -304,6 +372,34 @@ TEST(PclLevelSetReconstruction, ReusedOrRunTwiceAtOnceGivesWhatEachGivesAlone) {
   second.join();
   EXPECT_EQ(sphere_threaded, sphere_alone);
   EXPECT_EQ(torus_threaded, torus_alone);
+}
+
+// Every length the setters take is in the cloud's units: the same cloud 1024 times larger (a
+// power of two: every coordinate and length scales exactly, and so does the unit box's map)
+// with lengths 1024 times larger gives the same mesh, 1024 times larger.
+TEST(PclLevelSetReconstruction, LengthsAreInTheCloudsUnits) {
+  const auto small = torus_cloud<pcl::PointXYZ>(3000);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr large(new pcl::PointCloud<pcl::PointXYZ>(*small));
+  for (auto& p : *large) p.getVector3fMap() *= 1024.0f;
+  pcl::LevelSetReconstruction<pcl::PointXYZ> a, b;
+  a.setResolution(0.1);
+  a.setHoleRadius(0.2);
+  a.setTolerance(0.05);
+  a.setCurvatureWeight(0.01);
+  b.setResolution(0.1 * 1024);
+  b.setHoleRadius(0.2 * 1024);
+  b.setTolerance(0.05 * 1024);
+  b.setCurvatureWeight(0.01 * 1024 * 1024);
+  const auto polygons = polygons_of(a, small);
+  ASSERT_FALSE(polygons.empty());
+  EXPECT_EQ(polygons_of(b, large), polygons);
+  EXPECT_DOUBLE_EQ(b.getStatus().tolerance, 1024 * a.getStatus().tolerance);
+  // The large cloud's lengths on the small cloud: a mesh size wider than the cloud, refused.
+  b.setInputCloud(small);
+  pcl::PolygonMesh mesh;
+  b.reconstruct(mesh);
+  EXPECT_FALSE(b.getStatus().ok);
+  EXPECT_NE(b.getStatus().message.find("h_min"), std::string::npos) << b.getStatus().message;
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ TEST(PclLevelSetReconstruction, OtherPointTypesWorkWithPclNoPrecompile) {
   }
   pcl::LevelSetReconstruction<pcl::PointWithViewpoint> ls;
   ls.setInputCloud(cloud);
-  ls.setResolution(32);
+  ls.setResolution(0.08);  // cloud units: the sphere has radius 1
   pcl::PolygonMesh mesh;
   ls.reconstruct(mesh);
   EXPECT_TRUE(ls.getStatus().converged);

@@ -8,20 +8,49 @@
 #include <string>
 
 namespace lsr::detail {
+namespace {
+
+[[noreturn]] void bad(const std::string& what, const std::string& hint) { throw InvalidInput(what, hint); }
+
+// The lengths, in the unit box.
+void check_lengths(const ReconstructionOptions& o) {
+  const std::string unit = o.lengths == LengthUnit::input ? " (unit box: your value times the box's scale)" : "";
+  if (!(o.mesh.h_min >= 0.0 && o.mesh.h_min < 1.0)) bad("h_min must be in [0, 1)" + unit, "use 0 (automatic) or e.g. 1/128");
+  if (!(o.mesh.max_resolution == 0.0 || (o.mesh.max_resolution >= 4.0 && o.mesh.max_resolution <= 1e5))) {
+    bad("max_resolution must be 0 (automatic) or in [4, 1e5]" + unit, "use 0 (256 in 3D, 4096 in 2D) or e.g. 512");
+  }
+  if (!(o.stopping.tolerance >= 0.0 && o.stopping.tolerance < 1.0)) {
+    bad("tolerance must be in [0, 1)" + unit, "use 0 (automatic: tolerance_factor local spacings)");
+  }
+  if (!(o.sampling.hole_radius < 0.5)) bad("hole_radius must be below 0.5" + unit, "use -1 (automatic), 0 (no closing) or e.g. 0.06");
+}
+
+}  // namespace
+
+ReconstructionOptions in_unit_box(ReconstructionOptions o, double scale) {
+  if (o.lengths == LengthUnit::input) {
+    o.mesh.h_min *= scale;
+    o.mesh.max_resolution /= scale;
+    if (o.sampling.hole_radius > 0.0) o.sampling.hole_radius *= scale;
+    if (o.evolution.curvature_weight > 0.0) o.evolution.curvature_weight *= scale * scale;
+    o.stopping.tolerance *= scale;
+  }
+  check_lengths(o);
+  o.lengths = LengthUnit::unit_box;
+  return o;
+}
 
 void check_options(const ReconstructionOptions& o) {
-  auto bad = [](const std::string& what, const std::string& hint) { throw InvalidInput(what, hint); };
-  if (!(o.mesh.h_min >= 0.0 && o.mesh.h_min < 1.0)) bad("h_min must be in [0, 1)", "use 0 (automatic) or e.g. 1/128");
-  if (!(o.mesh.max_resolution == 0.0 || (o.mesh.max_resolution >= 4.0 && o.mesh.max_resolution <= 1e5))) {
-    bad("max_resolution must be 0 (automatic) or in [4, 1e5]", "use 0 (256 in 3D, 4096 in 2D) or e.g. 512");
-  }
+  if (o.lengths == LengthUnit::unit_box) check_lengths(o);
   if (!(o.mesh.anisotropic_error > 0.0 && o.mesh.anisotropic_error <= 100.0)) {
     bad("anisotropic_error must be in (0, 100]", "use 0.25 (local mesh sizes)");
   }
   if (!std::isfinite(o.evolution.alpha)) bad("alpha is not finite", "use 0 (automatic), 2 or -2");
   if (!std::isfinite(o.evolution.curvature_weight)) bad("curvature_weight is not finite", "use -1 (automatic)");
+  if (!(o.mesh.h_min >= 0.0)) bad("h_min must be >= 0", "use 0 (automatic)");
+  if (!(o.mesh.max_resolution >= 0.0)) bad("max_resolution must be >= 0", "use 0 (automatic)");
+  if (!(o.stopping.tolerance >= 0.0)) bad("tolerance must be >= 0", "use 0 (automatic)");
   if (!(o.evolution.time_step >= 0.0 && o.evolution.time_step < 1e3)) bad("time_step must be >= 0 and finite", "use 0 (automatic: 0.2 / |alpha|)");
-  if (!(o.stopping.tolerance >= 0.0 && o.stopping.tolerance < 1.0)) bad("tolerance must be in [0, 1)", "use 0 (automatic: tolerance_factor local spacings)");
   auto factor = [&](double v, const char* name, double lo, double hi, const char* use) {
     if (!(v > lo && v <= hi)) bad(std::string(name) + " must be in (" + std::to_string(lo) + ", " + std::to_string(hi) + "]", use);
   };
@@ -32,7 +61,6 @@ void check_options(const ReconstructionOptions& o) {
   if (!(o.start.start_offset >= 0.0 && o.start.start_offset < o.sampling.gap_factor)) {
     bad("start_offset must be in [0, gap_factor)", "use 0.5 (local spacings) or 0 (the flood's boundary)");
   }
-  if (!(o.sampling.hole_radius < 0.5)) bad("hole_radius must be below 0.5 (unit box)", "use -1 (automatic), 0 (no closing) or e.g. 0.06");
   if (o.stopping.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.evolution.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.stopping.patience < 1) bad("patience must be at least 1", "use 5");

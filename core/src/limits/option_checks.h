@@ -7,6 +7,11 @@
 
 namespace lsr::detail {
 
+/// @brief Refuses options out of range; the lengths only when they are in the unit box.
 void check_options(const ReconstructionOptions& o);
+
+/// @brief The options with their lengths in the unit box, `scale` unit-box lengths per input
+/// length (UnitBoxTransform::scale), checked.
+ReconstructionOptions in_unit_box(ReconstructionOptions o, double scale);
 
 }  // namespace lsr::detail

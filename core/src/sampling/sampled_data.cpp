@@ -2,6 +2,7 @@
 /// @file sampled_data.cpp
 #include "sampling/sampled_data.h"
 
+#include "limits/option_checks.h"
 #include "start/start_fields.h"
 
 namespace lsr::detail {
@@ -32,8 +33,9 @@ SampledData<D> sampled_data(const Points<D>& input, const ReconstructionOptions&
   }
   const double spacing = median(sampling.spacing), noise = median(sampling.noise);
   std::vector<double> point_scale = local_scales(sampling);
+  const ReconstructionOptions unit = in_unit_box(o, box.scale());
   LeftOut<D> left_out =
-      keep_mesh_resolution(data, sampling, point_scale, local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads);
+      keep_mesh_resolution(data, sampling, point_scale, local_mesh_sizes<D>(point_scale, unit.mesh.h_min, unit.mesh.max_resolution), o.limits.threads);
   return {std::move(in), box, std::move(data), std::move(sampling), std::move(point_scale), std::move(left_out), spacing, noise};
 }
 

@@ -3,6 +3,7 @@
 /// @brief sampled_data shared among workers: split_cloud, with_halo, estimate_local_sampling on
 /// the run and its halo, the isolated points dropped where they lie, keep_mesh_resolution on
 /// each run, and every run's sample gathered to worker 0 in the cloud's order.
+#include "limits/option_checks.h"
 #include "sampling/cloud_halo.h"
 #include "sampling/cloud_split.h"
 #include "sampling/mesh_resolution_data.h"
@@ -74,8 +75,9 @@ std::optional<SampledData<D>> shared_sampled_data(const Points<D>& share, const 
   const double spacing = median_over_workers(x, sampling.spacing.data() + first, end - first);
   const double noise = median_over_workers(x, sampling.noise.data() + first, end - first);
   std::vector<double> point_scale = local_scales(sampling);
+  const ReconstructionOptions unit = in_unit_box(o, box.scale());
   LeftOut<D> left_out = keep_mesh_resolution(*index, sampling, point_scale,
-                                             local_mesh_sizes<D>(point_scale, o.mesh.h_min, o.mesh.max_resolution), o.limits.threads, &halo);
+                                             local_mesh_sizes<D>(point_scale, unit.mesh.h_min, unit.mesh.max_resolution), o.limits.threads, &halo);
   // Worker 0 gets every run's sample, in the cloud's order: the run's values, thinned to its
   // kept points (all its own if the cloud was not thinned; none, maybe, if it was). Every
   // worker does when they share the front's tiles too (tiles/tile_outputs.h).

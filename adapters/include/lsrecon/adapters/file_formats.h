@@ -21,6 +21,10 @@ enum class FileRole {
   volume_output, ///< mesh msh vtu (inside/outside meshes, volume_mesh_files.h)
 };
 
+/// @brief The name of each output vertex's distance to the data (ReconstructionResult::
+/// distance_to_data): a PLY vertex property, a pcl::PolygonMesh field, an OpenMesh property.
+inline constexpr const char* kDistanceProperty = "distance";
+
 /// @brief True if files with extension `ext` (lower case, no dot) play `role`.
 bool has_role(const std::string& ext, FileRole role);
 

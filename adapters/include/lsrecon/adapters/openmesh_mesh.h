@@ -17,9 +17,12 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include "lsrecon/adapters/file_formats.h"
 #include "lsrecon/core/level_set_extraction.h"
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace lsr::adapters {
 
@@ -39,6 +42,13 @@ using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
 /// @throw lsr::Error if OpenMesh refuses a face (a non-manifold surface).
 TriMesh to_openmesh(const LevelSetMesh<3>& surface, const Points<3>& normals);
 
+/// @brief Attaches `distance` (#vertices) as the vertex property kDistanceProperty: it survives
+/// decimate() (the vertices kept do not move) and is written to PLY.
+void set_distance_to_data(TriMesh& mesh, const std::vector<double>& distance);
+
+/// @brief The vertex property kDistanceProperty, if the mesh has it.
+std::optional<OpenMesh::VPropHandleT<double>> distance_to_data(const TriMesh& mesh);
+
 /// @brief Vertices and triangles of an OpenMesh mesh.
 LevelSetMesh<3> from_openmesh(const TriMesh& mesh);
 
@@ -48,7 +58,7 @@ LevelSetMesh<3> from_openmesh(const TriMesh& mesh);
 TriMesh read_mesh_file(const std::string& path);
 
 /// @brief Writes PLY (binary, double), OBJ, OFF or STL by the file's extension, with vertex
-/// normals where the format holds them, 17 significant digits in text, atomically (an existing
+/// normals where the format holds them (and, in PLY, the distance to the data if attached), 17 significant digits in text, atomically (an existing
 /// file survives a failure). STL holds floats only.
 /// @throw lsr::Error naming the path and the supported extensions.
 void write_mesh_file(const TriMesh& mesh, const std::string& path);

@@ -4,15 +4,25 @@
 /// pcl::PointNormal cloud) and back to core triangles for checks.
 #pragma once
 
+#include "lsrecon/adapters/file_formats.h"
 #include "lsrecon/core/level_set_extraction.h"
 
 #include <pcl/PolygonMesh.h>
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
+#include <string>
 #include <vector>
 
 namespace lsr::adapters {
+
+/// @brief A cloud of one FLOAT32 field `name`, one point per value.
+pcl::PCLPointCloud2 scalar_field(const std::string& name, const std::vector<float>& values);
+
+/// @brief Appends to `to` the fields of `from` that `to` lacks, point by point (the same
+/// number of points), e.g. the colour of each vertex's nearest input point.
+/// @throw lsr::Error if the point counts differ.
+void append_fields(const pcl::PCLPointCloud2& from, pcl::PCLPointCloud2& to);
 
 /// @brief One pcl::PointNormal per vertex, with its unit normal (z = z_plane, normal_z = 0 in 2D).
 template <int D>

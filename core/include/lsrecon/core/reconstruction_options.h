@@ -4,7 +4,7 @@
 /// the mesh, the start, the evolution, the stopping test, the output, the limits.
 ///
 /// Lengths are relative to the unit box the data is mapped into (the data's bounding ball
-/// becomes a ball of radius 0.4); 0 (or a negative value where 0 has a meaning) means "choose
+/// becomes a ball of radius 0.4), or in the input's units (ReconstructionOptions::lengths); 0 (or a negative value where 0 has a meaning) means "choose
 /// from the data". Local scales (docs/how-it-works.md): s_i is the sampling spacing at data
 /// point i, and a mesh vertex takes the s of its nearest data point. From s: the mesh size near
 /// the data (max(s, 1.5 noise)), the tagging distance and the front's tolerance between samples
@@ -21,6 +21,12 @@
 #include <memory>
 
 namespace lsr {
+
+/// @brief The unit of the lengths a user sets (ReconstructionOptions::lengths).
+enum class LengthUnit {
+  unit_box,  ///< the unit box the data's bounding ball is mapped into (radius 0.4)
+  input,     ///< the input's coordinates, converted once the unit box is known
+};
 
 /// @brief Where the front starts.
 enum class InitialFront {
@@ -241,6 +247,10 @@ struct ReconstructionOptions {
   StoppingOptions stopping;
   OutputOptions output;
   LimitOptions limits;
+  /// The unit of sampling.hole_radius, mesh.h_min, mesh.max_resolution (per length),
+  /// evolution.curvature_weight (length^2) and stopping.tolerance. The other lengths stay in
+  /// the unit box: their defaults are unit-box values. Time (alpha, time_step) has no length.
+  LengthUnit lengths = LengthUnit::unit_box;
 };
 
 /// @brief The automatic values that follow from the dimension alone, with their reasons; the

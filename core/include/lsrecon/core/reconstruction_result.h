@@ -27,6 +27,11 @@ struct ReconstructionResult {
   ReconstructionStatus status = ReconstructionStatus::not_converged;
   LevelSetMesh<D> surface;          ///< in input coordinates; facets oriented outwards
   Points<D> normals;                ///< #surface vertices, unit, outward (from grad u)
+  /// #surface vertices: each vertex's distance to the nearest data point, input units (to the
+  /// sample the solver read: where the cloud is denser than the mesh, within a mesh size of
+  /// the nearest input point). Large where the surface is a guess (a side no view saw, a
+  /// spanned hole): trim by it, as PoissonRecon's users trim by its density.
+  std::vector<double> distance_to_data;
   /// With OutputOptions::volume_mesh: the box split into inside and outside along the
   /// surface, in input coordinates; its interface vertices are the surface's.
   VolumeMesh<D> volume;

@@ -11,6 +11,7 @@
 
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
+#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/point_types.h>
 #include <pcl/surface/impl/reconstruction.hpp>
 
@@ -19,76 +20,48 @@
 
 namespace pcl {
 
+namespace lsrecon_detail {
+/// Point types with fields beyond position and normal, carried to the vertices.
+template <typename PointT>
+constexpr bool kCarriesFields =
+    pcl::traits::has_color_v<PointT> || pcl::traits::has_intensity_v<PointT> || pcl::traits::has_label_v<PointT>;
+}  // namespace lsrecon_detail
+
+template <typename PointInT>
+bool LevelSetReconstruction<PointInT>::hasInput() {
+  if (this->input_) return true;
+  PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n", getClassName().c_str());
+  status_ = Status();
+  status_.message = "no input cloud [hint: call setInputCloud first]";
+  return false;
+}
+
 template <typename PointInT>
 void LevelSetReconstruction<PointInT>::reconstruct(pcl::PolygonMesh& output) {
-  if (!this->input_) {  // the base class would dereference the missing cloud
-    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
-              getClassName().c_str());
+  if (hasInput()) {
+    SurfaceReconstruction<PointInT>::reconstruct(output);  // would dereference the missing cloud
+  } else {
     output = pcl::PolygonMesh();
-    status_ = Status();
-    status_.message = "no input cloud [hint: call setInputCloud first]";
-    return;
   }
-  SurfaceReconstruction<PointInT>::reconstruct(output);
 }
 
 template <typename PointInT>
-void LevelSetReconstruction<PointInT>::reconstruct(pcl::PointCloud<PointInT>& points,
-                                                   std::vector<pcl::Vertices>& polygons) {
-  if (!this->input_) {
-    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
-              getClassName().c_str());
+void LevelSetReconstruction<PointInT>::reconstruct(pcl::PointCloud<PointInT>& points, std::vector<pcl::Vertices>& polygons) {
+  if (hasInput()) {
+    SurfaceReconstruction<PointInT>::reconstruct(points, polygons);
+  } else {
     points.clear();
     polygons.clear();
-    status_ = Status();
-    status_.message = "no input cloud [hint: call setInputCloud first]";
-    return;
   }
-  SurfaceReconstruction<PointInT>::reconstruct(points, polygons);
 }
 
 template <typename PointInT>
-bool LevelSetReconstruction<PointInT>::reconstruct(lsr::adapters::TriMesh& mesh) {
-  mesh.clear();
-  status_ = Status();
-  if (!this->input_) {
-    PCL_ERROR("[pcl::%s::reconstruct] No input cloud [hint: call setInputCloud first]\n",
-              getClassName().c_str());
-    return false;
-  }
-  if (!this->initCompute()) return false;
-  pcl::PointCloud<pcl::PointNormal> vertices;
-  std::vector<pcl::Vertices> polygons;
-  const bool ok = run(vertices, polygons);
-  this->deinitCompute();
-  if (!ok) return false;
-  if (status_.dimension != 3) {
-    PCL_ERROR("[pcl::%s::reconstruct] the cloud is planar: closed curves are not a triangle mesh "
-              "[hint: use reconstruct(pcl::PolygonMesh&) for 2D data]\n", getClassName().c_str());
-    return false;
-  }
-  mesh.request_vertex_normals();
-  std::vector<lsr::adapters::TriMesh::VertexHandle> handles;
-  handles.reserve(vertices.size());
-  for (const auto& p : vertices) {
-    handles.push_back(mesh.add_vertex(lsr::adapters::TriMesh::Point(p.x, p.y, p.z)));
-    mesh.set_normal(handles.back(), lsr::adapters::TriMesh::Normal(p.normal_x, p.normal_y, p.normal_z));
-  }
-  for (const auto& t : polygons) {
-    mesh.add_face(handles[t.vertices[0]], handles[t.vertices[1]], handles[t.vertices[2]]);
-  }
-  return true;
-}
-
-template <typename PointInT>
-bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& vertices,
-                                           std::vector<pcl::Vertices>& polygons) {
+bool LevelSetReconstruction<PointInT>::run(Output& out) {
   status_ = Status();
   input_normals_.clear();
   volume2_ = {};
   volume3_ = {};
-  vertices.clear();
-  polygons.clear();
+  out = Output();
   try {
     lsr::adapters::ConvertedPoints in = lsr::adapters::points_from_cloud(*this->input_, this->indices_.get());
     status_.skipped_points = in.skipped_non_finite + in.skipped_bad_index;
@@ -116,12 +89,12 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       status_.iterations = r.iterations;
       status_.residual = r.residual;
       status_.tolerance = r.tolerance;
+      status_.spacing = r.spacing;
       status_.residual_history = r.residual_history;
       status_.stage_seconds = r.seconds;
       status_.outlier_points = r.outlier_points;
-      status_.sealed_cavities = r.sealed_cavities;
-      status_.open_side_points = r.open_side_points;
       status_.mesh_vertices = std::size_t(r.mesh_vertices);
+      out.distance.assign(r.distance_to_data.begin(), r.distance_to_data.end());
       if (r.status == lsr::ReconstructionStatus::not_converged) {
         // As PCL's own tools say it: the mesh is the best iterate, usable, but the user should know.
         PCL_WARN("[pcl::%s::reconstruct] not converged after %d steps (residual %g > tolerance %g); the best "
@@ -135,55 +108,79 @@ bool LevelSetReconstruction<PointInT>::run(pcl::PointCloud<pcl::PointNormal>& ve
       for (const auto& p : in.points) planar.emplace_back(p.x(), p.y());
       auto r = lsr::reconstruct<2>(planar, options_, progress_);
       volume2_ = std::move(r.volume);
-      vertices = lsr::adapters::normal_cloud<2>(r.surface.vertices, r.normals, 0.5 * (z_min + z_max));
-      polygons = lsr::adapters::polygons_from_loops(r.loops);
+      out.vertices = lsr::adapters::normal_cloud<2>(r.surface.vertices, r.normals, 0.5 * (z_min + z_max));
+      out.polygons = lsr::adapters::polygons_from_loops(r.loops);
       record(r);
     } else {
       auto r = lsr::reconstruct<3>(in.points, options_, progress_);
       volume3_ = std::move(r.volume);
-      vertices = lsr::adapters::normal_cloud<3>(r.surface.vertices, r.normals);
+      out.vertices = lsr::adapters::normal_cloud<3>(r.surface.vertices, r.normals);
       const float nan = std::numeric_limits<float>::quiet_NaN();
       input_normals_.assign(this->input_->size(), pcl::Normal(nan, nan, nan));
       for (std::size_t i = 0; i < in.source.size() && i < r.point_normals.size(); ++i) {
         const auto& n = r.point_normals[i];
         input_normals_[std::size_t(in.source[i])] = pcl::Normal(float(n.x()), float(n.y()), float(n.z()));
       }
-      polygons = lsr::adapters::polygons_from_triangles(r.surface.facets);
+      out.polygons = lsr::adapters::polygons_from_triangles(r.surface.facets);
       record(r);
+    }
+    if constexpr (lsrecon_detail::kCarriesFields<PointInT>) {
+      pcl::PointCloud<pcl::PointXYZ>::Ptr used(new pcl::PointCloud<pcl::PointXYZ>);
+      for (const auto& p : in.points) used->push_back(pcl::PointXYZ(float(p.x()), float(p.y()), float(p.z())));
+      pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+      tree.setInputCloud(used);
+      pcl::Indices k(1);
+      std::vector<float> d(1);
+      out.nearest.resize(out.vertices.size());
+      for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+        const auto& v = out.vertices[i];
+        tree.nearestKSearch(pcl::PointXYZ(v.x, v.y, v.z), 1, k, d);
+        out.nearest[i] = in.source[std::size_t(k[0])];
+      }
     }
     return true;
   } catch (const std::exception& e) {
     PCL_ERROR("[pcl::%s::performReconstruction] %s\n", getClassName().c_str(), e.what());
     status_.ok = false;
     status_.message = e.what();
-    vertices.clear();
-    polygons.clear();
+    out = Output();
     return false;
   }
 }
 
 template <typename PointInT>
 void LevelSetReconstruction<PointInT>::performReconstruction(pcl::PolygonMesh& output) {
-  pcl::PointCloud<pcl::PointNormal> vertices;
-  run(vertices, output.polygons);
-  pcl::toPCLPointCloud2(vertices, output.cloud);
+  Output out;
+  run(out);
+  output.polygons = std::move(out.polygons);
+  pcl::toPCLPointCloud2(out.vertices, output.cloud);
+  lsr::adapters::append_fields(lsr::adapters::scalar_field(lsr::adapters::kDistanceProperty, out.distance), output.cloud);
+  if constexpr (lsrecon_detail::kCarriesFields<PointInT>) {
+    pcl::PointCloud<PointInT> nearest;
+    pcl::copyPointCloud(*this->input_, out.nearest, nearest);
+    pcl::PCLPointCloud2 fields;
+    pcl::toPCLPointCloud2(nearest, fields);
+    lsr::adapters::append_fields(fields, output.cloud);
+  }
 }
 
 template <typename PointInT>
 void LevelSetReconstruction<PointInT>::performReconstruction(pcl::PointCloud<PointInT>& points,
                                                              std::vector<pcl::Vertices>& polygons) {
-  pcl::PointCloud<pcl::PointNormal> vertices;
-  run(vertices, polygons);
+  Output out;
+  run(out);
+  polygons = std::move(out.polygons);
   points.clear();
-  points.resize(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    points[i].x = vertices[i].x;
-    points[i].y = vertices[i].y;
-    points[i].z = vertices[i].z;
+  points.resize(out.vertices.size());
+  for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+    if constexpr (lsrecon_detail::kCarriesFields<PointInT>) points[i] = (*this->input_)[std::size_t(out.nearest[i])];
+    points[i].x = out.vertices[i].x;
+    points[i].y = out.vertices[i].y;
+    points[i].z = out.vertices[i].z;
     if constexpr (pcl::traits::has_normal_v<PointInT>) {
-      points[i].normal_x = vertices[i].normal_x;
-      points[i].normal_y = vertices[i].normal_y;
-      points[i].normal_z = vertices[i].normal_z;
+      points[i].normal_x = out.vertices[i].normal_x;
+      points[i].normal_y = out.vertices[i].normal_y;
+      points[i].normal_z = out.vertices[i].normal_z;
     }
   }
   points.width = std::uint32_t(points.size());
