@@ -29,7 +29,7 @@ Eigen::VectorXd two_sided_drive(const P1Operators<D>& ops, const Eigen::VectorXd
 // the one-sided term would go on pulling it on, into a pit under one of the widest empty discs
 // of a random sample, which the stopping test's front side then never accepts. Not `near_hole`
 // (empty: nowhere): a front that crept past a hole's rim is the fit's to correct (attach_fit),
-// and resting it there left handles (measured: the noisy holey trefoils of seeds 2 and 4).
+// and resting it there leaves handles.
 template <int D>
 Eigen::VectorXd drive_resting_past_data(const P1Operators<D>& ops, const Eigen::VectorXd& d, const Points<D>& away,
                                         const Eigen::VectorXd& u, const std::vector<double>& dist, const Eigen::VectorXd& gap,
@@ -45,8 +45,8 @@ struct Attraction {
 /// the distance to the rims' tangent discs (tangent_discs.h) wherever a hole's discs can reach
 /// and the start's gap (plus a margin) beyond. Within the gap of the data the points themselves
 /// attract: there the discs add nothing over a hole, and at a concave crease the tilted PCA
-/// planes of the points next to it span the groove less than a gap from its tip (measured: a
-/// lid that stalled the double torus's front).
+/// planes of the points next to it span the groove less than a gap from its tip (a lid that
+/// stalls the front).
 template <int D>
 Attraction attraction(const NearestPointIndex<D>& data, const LocalSampling<D>& sampling, const SimplexMesh<D>& mesh,
                       const std::vector<double>& dist, const Eigen::VectorXd& distance, const Eigen::VectorXd& scale,

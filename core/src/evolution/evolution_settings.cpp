@@ -45,7 +45,7 @@ EvolutionSettings resolve_evolution_settings(const ReconstructionOptions& o, con
     s.reach[i] = 0.5 * eps;
   }
   s.median_eps = median(s.eps);
-  // Measured against the driving d: over a spanned hole, the distance to the discs.
+  // Against the driving d: over a spanned hole, the distance to the discs.
   const std::size_t nv = std::size_t(scale.size());
   s.front_tolerance.resize(Eigen::Index(nv));
   for (std::size_t v = 0; v < nv; ++v) {

@@ -87,8 +87,7 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
       if (n % interval == 0) {
         // Against the driving d: a piece of front held by pinned cells has settled, and what
         // it spans is the resolution limit, not a reason to go on. Not near spanned holes: a
-        // front that crept past a hole's rim is the fit's to correct (attach_fit), and held 4
-        // of 80 holey draws "not converged" (measured).
+        // front that crept past a hole's rim is the fit's to correct (attach_fit).
         stepper.release();  // the renormalisation is the loop's memory peak
         const RenormalizationReport<D> renormalized = renormalize(p_.mesh, p_.neighbours, u, schedule_.band, o.limits.threads);
         front_distance = max_front_distance(renormalized.front, d, p_.front_tolerance, all_tested ? p_.near_hole : front_ignored);
@@ -142,7 +141,7 @@ void FrontEvolution<D>::run(Eigen::VectorXd u, Eigen::VectorXd& d, Reconstructio
           break;
         }
         if (!restart || restarted) break;
-        // Once: on from the restart's field, measured afresh.
+        // Once: on from the restart's field, its residual read afresh.
         restarted = true;
         r.stalled = false;
         u = restart();

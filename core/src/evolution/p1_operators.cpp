@@ -23,7 +23,7 @@ std::array<Vec<D>, D + 1> gradients_of(const SimplexMesh<D>& mesh, const Simplex
 
 // Row block i of G gathers |K| grad w_{K,j} / |B_i| over the simplices K of the ball of i and
 // their vertices j: its columns are i and its neighbours. Written straight into its storage, one
-// vertex per task: no triplet list (1.4 GB at 209k vertices, measured) and no serial pass.
+// vertex per task: no triplet list and no serial pass.
 template <int D>
 void assemble_gradient(const SimplexMesh<D>& mesh, const SimplexGeometry<D>& g, const VertexNeighbours& n,
                        int threads, P1Operators<D>& ops) {

@@ -22,13 +22,13 @@ using SparseRowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, Index>;
 ///
 /// Nodal vector fields are stored as one vector of D * #V entries, component k of vertex i at
 /// D * i + k. G is assembled (in parallel, straight into its storage): products with it ran
-/// 4.6x faster than matrix-free gathers over the simplices (measured, 537k vertices), whose
+/// 4.6x faster than matrix-free gathers over the simplices (docs/calibration.md), whose
 /// per-simplex reads are scattered. Its D rows of a vertex share one column pattern (the vertex
 /// and its neighbours), so G is stored by blocks: one column index and D side-by-side values per
 /// entry. G^T is not stored (it doubled the operators' memory, a third of the peak): G^T y is
 /// scattered from G's rows, read in storage order like G u. Gathered per column instead, through
 /// an index of transposed entries, it read scattered values and took 5x the time of G u on a
-/// Z-ordered mesh, 7x with G in Eigen's row storage (measured, 536k vertices).
+/// Z-ordered mesh.
 template <int D>
 struct P1Operators {
   /// G, (D #V) x #V: (G u)_i = sum_{K in B_i} |K| sum_{j in K} u_j grad w_{K,j} / |B_i|
@@ -80,8 +80,8 @@ P1Operators<D> assemble_p1_operators(const SimplexMesh<D>& mesh, const SimplexGe
 ///
 /// It keeps G v between products, and a time loop keeps one operator for all its steps
 /// (freeze() per step): vectors allocated afresh at each product were page-faulted in again
-/// each time (glibc returns large freed blocks to the system), which took 3x the arithmetic
-/// of the 200k sphere's steps (775k vertices). Hence apply() is not reentrant.
+/// each time (glibc returns large freed blocks to the system), at 3x the arithmetic's cost.
+/// Hence apply() is not reentrant.
 template <int D>
 class SymmetricCurvatureOperator {
  public:

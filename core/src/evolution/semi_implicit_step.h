@@ -37,8 +37,7 @@ struct StepParameters {
 };
 
 /// @brief Steps u in place on one mesh, keeping its vectors from one step to the next (see
-/// SymmetricCurvatureOperator: a step of the 200k sphere spent 3x its arithmetic page-faulting
-/// fresh vectors in). Gives the same u, to the bit, as semi_implicit_step().
+/// SymmetricCurvatureOperator: fresh vectors are page-faulted in at each step). Gives the same u, to the bit, as semi_implicit_step().
 template <int D>
 class SemiImplicitStepper {
  public:

@@ -3,10 +3,10 @@
 /// @brief When to stop a front that no longer converges. A free front closes its gap to the
 /// data by the factor exp(-|alpha| dt) (0.82 at the defaults) per step. One held at the tip of
 /// a concave crease or by pins at a slit stands still while its residual creeps (0.1-1% per
-/// step, measured on the double and triple tori and the cup); waiting until not even that
+/// step); waiting until not even that
 /// happens costs up to 20-40 steps. A front that creeps while it still sweeps volume is not
 /// held: a membrane thinning to a pinch (a start through a torus's hole) or a noisy front
-/// eating into its outliers (2-4% per step, measured) must go on. Nor is a still front whose
+/// eating into its outliers (2-4% per step) must go on. Nor is a still front whose
 /// bulk of points still comes closer (a bridge thinning to a pinch), but one whose residual
 /// creeps only at a few stragglers is (a million-point scan's registration layers).
 #pragma once

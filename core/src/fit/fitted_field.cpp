@@ -33,9 +33,8 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
   std::vector<double> fv;
   fit.evaluate(band, fv, nullptr, threads);
   // Near a sealed opening, the share of F in values: the output is projected onto F only that
-  // far (below), as F extrapolates where the front took over (measured: projected in full, the
-  // front's cap over a tube's open end turned facets inside out). Elsewhere in full (measured:
-  // limited everywhere, the clean sphere's Hausdorff distance x3.9).
+  // far (below), as F extrapolates where the front took over (projected in full, a front's cap
+  // over an open end turns facets inside out). Elsewhere in full: F is the accurate surface.
   if (!near_opening.empty()) {
     fit_share.resize(values.size());
     for (std::size_t v = 0; v < values.size(); ++v) fit_share[v] = near_opening[v] ? 0.0 : 1.0;
@@ -46,8 +45,7 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
   // The settled front lies within gap_factor spacings of the data: a fit that disagrees with its
   // sign farther away than that is a failed local fit (creases, sparse spots), not the surface.
   // But in a gap between two facing sheets (sheet_gaps.h) the pinned cells of both sides hold a
-  // bridge of front as deep as half the gap, which the fit cuts at any depth (measured: a bridge
-  // 2.09 spacings deep kept the noisy, holey two spheres of seed 3 in one piece).
+  // bridge of front as deep as half the gap, which the fit cuts at any depth.
   std::vector<std::size_t> disputed;  // band slots where the fit says outside, inside the front
   Points<D> queries;
   std::vector<double> query_distance, query_scale;
@@ -73,13 +71,10 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
       limit_share(v, 1.0 - w);
     };
     // Over a spanned hole nothing pins the front, and on a mesh the vertices next to the discs
-    // keep a distance up to half an edge, through which a long run lets it creep into the solid
-    // (measured: 0.13 into a sphere by step 26 of the holey two spheres, with a small handle in
-    // its zero set, on 5 of 80 draws of the holey clouds). Where the fit adds solid there and
-    // the front near v (u away) lies beyond the data's gap, the fit's solid stays. Not where
-    // the front is at the data: a knife edge's rim discs run on past its tip, and so do the
-    // fit's tangent planes (measured: without that test, fins 2.8 spacings past the 5k bunny's
-    // ear tips).
+    // keep a distance up to half an edge, through which a long run lets it creep into the solid.
+    // Where the fit adds solid there and the front near v (u away) lies beyond the data's gap,
+    // the fit's solid stays. Not where the front is at the data: a knife edge's rim discs run on
+    // past its tip, and so do the fit's tangent planes (fins).
     const bool adds_solid = values[v] < 0.0 && u[v] > 0.0;
     const bool hole = is_over_hole(std::size_t(v));
     if (hole && adds_solid && distance[v] - u[v] > trust_factor * scale[v]) continue;
@@ -87,45 +82,36 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
     // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
     // and farther than one spacing from every sample on exp(-6) = 0.25% of its area. Where the
     // fit's surface passes farther from the data (nearer to v than half v's distance to the
-    // data), it extrapolates: the tangent planes of a knife edge's sides run on past its tip
-    // (measured on the bunny's ear). From 1 to 2 spacings the front takes over (measured: from
-    // 1.5 to 2.5, the noisy bunny kept fins on its ear tips, Hausdorff distance up to 1.9e-2 of
-    // the diagonal, 2.8x Poisson's with the true normals). A pit of the front deep inside the
-    // data is left to the fit (there |F| is v's distance to the data: measured, the noisy two
-    // spheres got a void). Near a sealed opening (a tube's open end, where the front closes
-    // what the fits continue) the fit's distance is not asked: on the tube's axis past its end
-    // the fits' surface lies a tube radius away, nearer than half the distance to the rim
-    // (measured: a notched end, the tube's wall run on past the front's cap).
+    // data), it extrapolates: the tangent planes of a knife edge's sides run on past its tip.
+    // From 1 to 2 spacings (kHandover, calibrated) the front takes over. A
+    // pit of the front deep inside the data is left to the fit (there |F| is v's distance to
+    // the data). Near a sealed opening (a tube's open end, where the front closes what the fits
+    // continue) the fit's distance is not asked: on the tube's axis past its end the fits'
+    // surface lies a tube radius away, nearer than half the distance to the rim.
     if (adds_solid && (-values[v] < 0.5 * distance[v] || (!near_opening.empty() && near_opening[std::size_t(v)]))) {
       hand_over(kHandover);
     }
     // Over a spanned hole (where the rims' discs are nearer than the points) the front lies on
     // the discs, where the fit only extrapolates: from the gap to one spacing beyond it the
-    // front takes over, gradually, so that the two zero sets join without a step (measured:
-    // switching opened small handles at holes). Elsewhere only unsupported solid (above) is
-    // handed over (measured: a handover wherever the fit is far from the data left the noisy
-    // two spheres a third component in their neck).
+    // front takes over, gradually, so that the two zero sets join without a step (a switch
+    // opens small handles). Elsewhere only unsupported solid (above) is handed over: a handover
+    // wherever the fit is far from the data splits necks.
     if (hole) hand_over(trust_factor);
   }
   // The fit moves the surface and may remove what the front got wrong (bridges across a neck it
   // had not cut, handles of a noisy front), but not join what the front kept apart: where the two
-  // sides of a thin part or a crease lie within a fit's neighbourhood, its rounding opens handles
-  // (measured: the cup with the 10x density gradient and the holey double torus got one each).
+  // sides of a thin part or a crease lie within a fit's neighbourhood, its rounding opens handles.
   // Far from the data (past the largest empty disc, as above) the front is held by curvature
-  // alone and a guess: there the fit may join too (measured: a coarse front spanned a torus's
-  // hole). Not over a spanned hole, where the rims' discs hold the front where the samples say
-  // the surface goes (measured: the fit opened a handle across a hole on the noisy, holey
-  // limb's thin part, seed 2, where the front had none). A void the merge cut off the outside
-  // bounds no data and is filled (measured: with the fit's solid kept over every hole the front
-  // had crept through, one 2 spacings wide inside the holey limb). Bubbles and specks narrower
-  // than a spacing go last (measured: a one-vertex void in the noisy, holey limb and one in the
-  // cup's wall).
+  // alone and a guess: there the fit may join too (a coarse front spans a ring's hole). Not over
+  // a spanned hole, where the rims' discs hold the front where the samples say the surface goes.
+  // A void the merge cut off the outside bounds no data and is filled. Bubbles and specks
+  // narrower than a spacing go last.
   Eigen::VectorXd front = u;
   cap_at_walls<D>(mesh, front);
   cap_at_walls<D>(mesh, values);
   // In a gap between facing sheets the data's normals on both sides say outside, so the fit may
   // open it even where that joins: the front stalls short in a slit 3-4 spacings wide and its
-  // pins hold a membrane across it (measured: the scanned triple torus's middle hole, genus 2).
+  // pins hold a membrane across it.
   std::vector<char> may_join(values.size());
   for (std::size_t v = 0; v < values.size(); ++v) {
     may_join[v] = !is_over_hole(v) && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];

@@ -21,9 +21,8 @@ namespace lsr::detail {
 namespace {
 
 // At the rim of the unsupported surface (its fixed vertices next to a free one) the fit's
-// normals lean towards the flattened part: from above, 10-15 degrees on average on the sphere's
-// and the linked rings' rims, which the balance of rim_curvature_closure.h turns into a mean
-// curvature 0.8x the tube's. A quadric height field over the rim vertex's nearest data, wide
+// normals lean towards the flattened part, which the balance of rim_curvature_closure.h would
+// turn into too small a mean curvature. A quadric height field over the rim vertex's nearest data, wide
 // enough to span several scan rows, extrapolates within 1-3 degrees (rim_normals.h).
 template <int D>
 void take_rim_normals_from_data(const LevelSetMesh<D>& s, const EdgeGraph& edges, const std::vector<char>& free,
@@ -51,13 +50,10 @@ void take_rim_normals_from_data(const LevelSetMesh<D>& s, const EdgeGraph& edges
 // returns the vertices moved (empty: none), which take their facets' normals (the fit's there
 // belong to another sheet). A moved vertex comes towards its nearest sample by half its
 // distance at most: a single view's back lies 1-2 scales behind its front, and the fairing
-// carried parts of it through the data (measured with a support radius of one scale:
-// hippo1's back showed through its body). The set grows from the vertices past 1.5 scales
-// over the surface's edges through those past half a scale (hysteresis): the rims of unseen
-// parts are moved with them, down to the last seen rows of a tube's underside (from above,
-// the linked rings' flattened tube bottoms lay 2.5-3.6 spacings from the data, mostly within
-// 1.5 scales), while a vertex in a gap of a well sampled surface, with no vertex past 1.5
-// scales near, is left alone (all vertices past one scale: clean i.i.d. Hausdorff 1.63x).
+// carried parts of it through the data. The set grows from the vertices past 1.5 scales over
+// the surface's edges through those past half a scale (hysteresis, calibrated): the rims of
+// unseen parts are moved with them, down to the last seen rows of a tube's underside, while a
+// vertex in a gap of a well sampled surface, with no vertex past 1.5 scales near, is left alone.
 template <int D>
 std::vector<char> fair_unsupported_parts(ReconstructionResult<D>& r, const NearestPointIndex<D>& data, const std::vector<double>& scale, int threads) {
   constexpr double kStep = 4.0, kTowardsData = 0.5, kLoose = 0.5;
@@ -126,8 +122,7 @@ template <int D>
 void refine_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
                      Points<D>& embedded, int threads) {
   // Facets longer than 2 l are split: in 3D, l = half a size gives fewer triangles than an
-  // isotropic mesh's extraction and a smaller Chamfer distance (measured: the sphere, torus and
-  // trefoil at 20k points: 0.75 sizes gave 2-3x the isotropic mesh's Chamfer distance). Past
+  // isotropic mesh's extraction and a smaller Chamfer distance (calibrated). Past
   // the band where the mesh is anisotropic (data_metric.h), over holes and open sides, the size
   // grows as the mesh's does across (MetricSizes::growth), as an isotropic mesh's would.
   const double share = D == 2 ? 0.75 : 0.5, growth = 0.5, band = kAnisotropicReach<D>;

@@ -26,16 +26,10 @@ class QuadricImplicit {
   /// Points per local fit on clean data. Noise sigma_i widens a fit to
   /// kFitNeighbours (1 + (sigma_i / (0.05 s_i))^2) points, at most kMaxFitNeighbours: its height
   /// error falls like sigma / sqrt(K) while the curvature bias grows like K^2 s^4 / R^3
-  /// (measured on the noisy sphere: 30 points 1.4x the Chamfer of Poisson given true normals,
-  /// 100 points 0.8x). In 3D a fit of kCubicNeighbours or more also fits the cubic terms of its
+  /// (calibrated, docs/calibration.md). In 3D a fit of kCubicNeighbours or more also fits the cubic terms of its
   /// height field and keeps them where they explain more than its noise (Schwarz's criterion,
   /// height_field_fit.h): the cubic follows a crease or a bend across the wide neighbourhood
-  /// that a quadric rounds, which lets noisy fits grow wider where the quadric suffices
-  /// (measured on the noisy 20k corpus, against quadrics of at most 120 points: Chamfer
-  /// distance 0.89-0.98x; cubics at 160 points without the criterion: the bunny 0.98x, the
-  /// analytic shapes 0.99-1.04x; cubics at 120: the bunny 1.005x; choosing by Mallows' Cp (2,
-  /// not ln n) at 200 or 240 points the smooth shapes gain more, 0.76-0.92x, the bunny less,
-  /// 0.985-1.012x).
+  /// that a quadric rounds, which lets noisy fits grow wider where the quadric suffices.
   static constexpr int kFitNeighbours = D == 2 ? 10 : 30;
   static constexpr int kMaxFitNeighbours = D == 2 ? 40 : 160;
   static constexpr int kCubicNeighbours = 2 * kFitNeighbours;
@@ -49,8 +43,7 @@ class QuadricImplicit {
   static constexpr long kFitBlock = 1 << 16;
   /// Normal width of a fit's neighbours on clean data, widened on noisy data by the factor
   /// sqrt(1 + (sigma_i / (0.05 s_i))^2) that widens the neighbourhood (at most 90 degrees).
-  /// Measured on the 20k bunny (Chamfer / diagonal): 5 degrees 2.39e-4, 7: 2.43e-4, 10: 2.58e-4,
-  /// 20: 3.01e-4, none 3.73e-4. A smooth part turns by less than 7 degrees across a fit's
+  /// Calibrated (docs/calibration.md). A smooth part turns by less than 7 degrees across a fit's
   /// neighbourhood wherever its radius of curvature exceeds about 25 spacings (the neighbours
   /// lie within about 3), and a fit on a tighter bend still keeps its nearest neighbours. Where
   /// the other side of a thin part lies among the PCA neighbours (within sqrt(15 / 6) s_i) the
@@ -60,11 +53,7 @@ class QuadricImplicit {
   /// them by more than this times sigma_i^2 in mean square: there its width rounds off what
   /// lies within its reach (a face's nose and mouth, a horn thinner than the fit). Noise alone
   /// keeps that mean below sigma^2 (the fit leaves part of it in its residual), with a standard
-  /// deviation of sigma^2 sqrt(2 / 30) = 0.26 sigma^2: 3 is eight of them above. Measured on
-  /// CGAL's oni (1,435 points, noise a fifth of the spacing, fits of 160 points): the data
-  /// within p90 1.2 nearest-neighbour distances of the surface and a horn's tip cut off as a
-  /// second part, with the test one part, p90 0.88. At 1.8 the scans' fits across their registration layers (whose
-  /// sigma understates their spread) were narrowed too: Chamfer distance 3-10% higher.
+  /// deviation of sigma^2 sqrt(2 / 30) = 0.26 sigma^2: 3 is eight of them above.
   static constexpr double kMaxMissRatio = 3.0;
 
   /// @param data the points (#N) and their kd-tree
@@ -84,8 +73,8 @@ class QuadricImplicit {
                 int threads = 0) const;
 
   /// @brief Moves each point onto {F = 0} (two steps x -= F(x) n(x)); returns the normals of the
-  /// second step's start (on the 200k torus the second step moved no point by more than 4e-9 of
-  /// the unit box: another blend there would cost a third of the projection for nothing).
+  /// second step's start (the second step moves points by rounding errors only: another blend
+  /// there would cost a third of the projection for nothing).
   /// The blended fits are those of the starting position: a step moves a point by far less
   /// than a spacing, over which the weight of a change in the k nearest is negligible.
   Points<D> project(Points<D>& points, int threads = 0) const;

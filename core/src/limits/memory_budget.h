@@ -10,15 +10,11 @@
 
 namespace lsr::detail {
 
-// Peak memory per input point and per mesh vertex, measured and rounded up. The sampling's peak
-// (trefoil 200k and 1M points at the same 327k vertices peaked at 495 and 929 MiB: 0.56 KB per
-// point; a 10M-point torus scan 0.51 KB) is over before the mesh is built. From the mesh on, a
-// run holds the sample at the mesh's size (mesh_resolution_data.h) at kBytesPerPoint a point,
+// Peak memory per input point and per mesh vertex, calibrated and rounded up
+// (docs/calibration.md). The sampling's peak is over before the mesh is built. From the mesh on,
+// a run holds the sample at the mesh's size (mesh_resolution_data.h) at kBytesPerPoint a point,
 // each point left out of it at kBytesPerLeftOutPoint (its place in the input, its normal, the
-// kept point it counts with: about 120 bytes on that scan, whose 0.2M-point sample and 629k-vertex
-// mesh took at most 2.1 GiB after the sampling's 5.0), and the mesh: the 200k sphere, torus and
-// trefoil at 0.99, 0.97 and 1.2 KB per 3D vertex. 2D: 2 KB per vertex, measured before G^T
-// stopped being stored.
+// kept point it counts with), and the mesh at kBytesPerVertex.
 constexpr double kBytesPerPoint = 1000.0;
 constexpr double kBytesPerLeftOutPoint = 150.0;
 template <int D>

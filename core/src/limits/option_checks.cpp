@@ -64,10 +64,9 @@ void check_options(const ReconstructionOptions& o) {
   if (o.stopping.max_iterations < 1) bad("max_iterations must be at least 1", "try 1000");
   if (o.evolution.renormalization_interval < 0) bad("renormalization_interval must be >= 0", "use 0 (automatic), 1 or 2");
   if (o.stopping.patience < 1) bad("patience must be at least 1", "use 5");
-  // The front side of the stopping test is measured at renormalisations: with none for
-  // `patience` steps no residual is known, and the run stops as stalled at its start (measured:
-  // a clean sphere with k = 100 kept step 0). Without renormalising, |u| is no distance either:
-  // the same sphere never came within tolerance in 100 steps.
+  // The front side of the stopping test is read at renormalisations: with none for `patience`
+  // steps no residual is known, and the run stops as stalled at its start. Without
+  // renormalising, |u| is no distance either.
   if (o.evolution.renormalization_interval > o.stopping.patience) {
     bad("renormalization_interval " + std::to_string(o.evolution.renormalization_interval) + " exceeds patience " +
             std::to_string(o.stopping.patience) + ": the stopping test measures the front at renormalisations",

@@ -20,9 +20,7 @@ namespace lsr::detail {
 // Rounds stop once one changes the vertex count by less than 2%: past that, each round splits
 // and collapses about as many edges as the last (relocation lengthens edges the next round
 // splits; a metric read at noisy data points jumps between them) and costs as much as the
-// first rounds. Measured: the 3D torus at 20k points, 5,386 vertices after round 4, 5,269
-// after round 12; the noisy 2D star, 15,839 after round 2, 15,780 after round 12, each of
-// rounds 3-12 splitting and collapsing 150-650 edges.
+// first rounds (the 2% is calibrated: docs/calibration.md).
 inline bool settled(Index before, Index now) { return std::abs(double(now - before)) < 0.02 * double(now); }
 
 template <int D>

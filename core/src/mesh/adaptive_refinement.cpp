@@ -27,15 +27,13 @@ namespace {
 
 using namespace detail;
 
-// New forest nodes per marked leaf (its bisection and the closure's): 2.2 to 2.8 in the passes
-// of the 200k torus, by level. The lower end: pages faulted in beyond what the pass fills would
+// New forest nodes per marked leaf (its bisection and the closure's; calibrated). The lower end: pages faulted in beyond what the pass fills would
 // stay resident.
 constexpr double kNodesPerMark = 2.2;
 
 // Bisects the marked leaves, serially (the closure's order decides the forest), while a second
 // thread faults in the pages the pass will fill: the forest's next nodes and, where their
-// storage has room, their witnesses. Measured on the 200k torus: those faults were 0.4 s of
-// the serial bisection (perf); the mesh stage took 0.5 s less (medians of six interleaved runs).
+// storage has room, their witnesses (docs/calibration.md).
 template <int D>
 void refine_marked(KuhnBisectionForest<D>& forest, const std::vector<Index>& marked, const LargeVector<Index>& witness,
                    int threads) {
@@ -51,8 +49,7 @@ void refine_marked(KuhnBisectionForest<D>& forest, const std::vector<Index>& mar
   const StorageRange witnesses = storage_range(witness, witness.size(), next);
   std::exception_ptr failure;
   // The calling thread bisects: the vertex-to-leaf lists it allocates stay in its malloc arena
-  // (bisecting on whichever thread took a section spread them over two, and the 200k sphere's
-  // peak rose by 40-60 MiB).
+  // (bisecting on whichever thread took a section spreads them over two, and raises the peak).
 #pragma omp parallel num_threads(2)
   if (omp_get_thread_num() == 0) {
     try {
@@ -323,7 +320,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
   LargeVector<Index> witness;  // per forest node: a data point near it, kNoWitness or kEmptyBall
   const double largest_local =
       o.point_size.empty() ? o.h_min : std::max(o.h_min, *std::max_element(o.point_size.begin(), o.point_size.end()));
-  // 4 typical sizes: measured on the 200k torus, 2, 3 and 8 certify fewer of the last pass's marks.
+  // 4 typical sizes (calibrated: docs/calibration.md).
   const NearbyLargestSize<D> nearby(data.points(), o.point_size, o.h_min, 4.0 * predicted.h_min, o.threads);
   const RefiningPoints refining(o);
   PassHistory history;

@@ -28,11 +28,8 @@ AdaptiveMeshOptions mesh_options(std::vector<double>& point_scale, const Reconst
 }
 
 // The anisotropic mesh starts from the Kuhn mesh this much coarser than the data's sizes and
-// splits down to them across: starting at the data's sizes, it collapsed nine vertices in ten
-// (measured on the 20k star, one thread: 0.74 s a run at 1x, 0.48 s at 4x, 0.43 s at 8x, 0.41 s
-// at 16x, the isotropic run 0.45 s; the same curve to 3 digits). In 3D, the 20k sphere's mesh
-// took 0.95 s from 2x, 0.67 s from 3x, 0.60 s from 4x, about 0.9 s from 8x (4 rounds) and 16x;
-// the same surface.
+// splits down to them across: starting at the data's sizes, it collapses nine vertices in ten
+// (the factor is calibrated: docs/calibration.md).
 template <int D>
 constexpr double kAnisotropicStartCoarsening = D == 2 ? 8.0 : 4.0;
 

@@ -21,11 +21,7 @@ namespace lsr {
 /// @brief Past this many sizes from the data the metric is isotropic, in 3D. The front's level
 /// sets follow the data only once it has settled there: on its way through slots and gaps, and
 /// where it pinches off a bridge, it runs across the data's directions, on elements long along
-/// them (measured, 3D, 20k points: with the data's metric everywhere two unit spheres 0.12
-/// apart merged; with 2 sizes they separate on 16k mesh vertices, 5.6x fewer than isotropic; 1
-/// size needed 25k vertices on the torus, 4 sizes left the spheres' run short of the data). In
-/// 2D none: the curves' cases separate without it, and with it the star took 2.7x the
-/// vertices it needs (the bar is 3x fewer than isotropic).
+/// them. Calibrated (docs/calibration.md). In 2D none: the curves separate without it.
 template <int D>
 inline constexpr double kAnisotropicReach = D == 2 ? std::numeric_limits<double>::infinity() : 2.0;
 

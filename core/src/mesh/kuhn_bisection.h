@@ -88,7 +88,7 @@ class KuhnBisectionForest {
   int cells_ = 0;
   Points<D> vertices_;
   LargeVector<ForestSimplex<D>> simplices_;
-  /// 48 slots in 3D: the longest list measured (200k-point torus); longer ones move out.
+  /// 48 slots in 3D (docs/calibration.md); longer lists move out.
   VertexLeafLists<D == 2 ? 16 : 48> leaves_at_vertex_;
   std::vector<double> level_size_;  ///< size() per level
   std::vector<Index> patch_;  ///< the leaves around the edge refine() bisects

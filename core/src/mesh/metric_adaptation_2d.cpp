@@ -43,8 +43,7 @@ using Edge = std::pair<Index, Index>;
 // were better: a fair triangle (angles within about 20-130 degrees in the metric).
 constexpr double kFairQuality = 0.3;
 // Split passes a round before the flips and moves repair the shapes: splitting the same thin
-// triangles pass after pass flattened some to zero area (measured: a drawn star and circle, in
-// 1-pixel lines, from a coarse start).
+// triangles pass after pass flattens some to zero area.
 constexpr int kSplitPasses = 2;
 
 class TriangleAdaptation : public detail::AdaptedSimplices<2> {

@@ -45,7 +45,7 @@ constexpr double kSplitFloor = 0.05;
 
 // Swaps and relocations are tried only where a tetrahedron is worse than this: most of a unit
 // mesh is better, and trying every face and edge took 2/3 of the time, relocating every vertex
-// a third of the rest (the 20k sphere: the adaptation 1.8 s -> 1.1 s, the same surface).
+// a third of the rest, for the same surface.
 constexpr double kImproveBelow = 0.5;
 
 double volume6(const Vec<3>& a, const Vec<3>& b, const Vec<3>& c, const Vec<3>& d) {
@@ -183,8 +183,7 @@ class TetAdaptation : public detail::AdaptedSimplices<3> {
       }
       // Each half as good as its tetrahedron or kSplitFloor (read in the metric of the vertex
       // it replaces): without that, splits in a metric that jumps between data points
-      // flattened the same tetrahedra round after round (measured: the 20k limb, worst shape
-      // 4e-10 after 12 rounds).
+      // flatten the same tetrahedra round after round.
       const Tet& s = simplices_[std::size_t(t)];
       const double keep = std::min(q_[std::size_t(t)], kSplitFloor);
       if (quality(s, a, m) < keep || quality(s, b, m) < keep) return false;

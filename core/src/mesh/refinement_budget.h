@@ -133,8 +133,7 @@ void check_predicted_size(const PassHistory& history, const AdaptiveMeshOptions&
 }
 
 // Room for the nodes the passes left will add, reserved while the forest is small: grown by
-// doubling, it moved in the last passes, and a move first-touches the whole new copy (measured
-// on the 200k sphere, seven runs each: bisection 1.36-2.17 s grown, 0.99-1.79 s reserved).
+// doubling, it moved in the last passes, and a move first-touches the whole new copy.
 // Reserved only when the next pass may not fit (the predictions of successive passes differ
 // by up to 1.5x: reserving each time would move the forest each time), then for all passes
 // left with a margin. Capacity never used is address space only, its pages never touched; a

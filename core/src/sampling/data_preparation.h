@@ -44,7 +44,7 @@ template <int D>
 bool drop_isolated(const LocalSampling<D>& s, double factor, Points<D>& points, std::vector<std::size_t>& kept);
 
 // The local scale l_i = max(s_i, 1.5 noise_i): what the sampling resolves, but not the noise
-// (finer than the noise makes islands; measured: 5 loops on a noisy circle). Every length of
+// (finer than the noise makes islands). Every length of
 // the solver is a multiple of it.
 template <int D>
 std::vector<double> local_scales(const LocalSampling<D>& s);
@@ -56,10 +56,8 @@ std::vector<double> local_mesh_sizes(const std::vector<double>& scale, double fi
 
 // The points (and their input indices) along a Z-order curve: a point's neighbours then lie
 // near it in memory. In scanner or i.i.d. order every neighbourhood query of the sampling, the
-// fit and the point location misses the cache (measured on 1M random bunny points: kd-tree 0.5
-// -> 0.15 s, sampling 2.0 -> 1.2 s, the fits' construction 4.8 -> 2.4 s). 3D only: 2D clouds are
-// mostly pixel lattices, small, and full of equidistant neighbours among which the order decides
-// (the all-black test image's outline came out as 3 loops in Z-order instead of 1).
+// fit and the point location misses the cache. 3D only: 2D clouds are mostly pixel lattices,
+// small, and full of equidistant neighbours among which the order decides.
 template <int D>
 void in_z_order(const UnitBoxTransform<D>& box, Points<D>& points, std::vector<std::size_t>& kept);
 

@@ -65,7 +65,7 @@ double largest_angular_gap(const Points<D>& p, const Index* nearest, int k, std:
 }
 
 // The mean |cos| between p_i's normal and its neighbours': about 1 on a smooth surface, less
-// across a crease or around a knife edge (the tip of the bunny's ears: 0.62-0.94, measured).
+// across a crease or around a knife edge.
 template <int D>
 double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std::size_t i) {
   double sum = 0.0;
@@ -77,13 +77,9 @@ double mean_agreement(const Points<D>& normals, const Index* nearest, int k, std
 // what noise sigma scatters PCA normals by. A normal fitted to k points over a disc of radius
 // r tilts by about sigma / (r sqrt(k) / 2) per axis, so two of them differ by E[theta^2] ~
 // 16 sigma^2 / (k r^2) and 1 - |cos| by half that: 0.19 (sigma / s)^2 with r^2 ~ (16 / 6) s^2.
-// Measured at 20k points (neighbouring fits overlap, rims see half a disc): median 0.25-0.31
-// (sigma / s)^2 on the noisy sphere, torus and triple torus, 90th percentile about twice that;
-// the allowance is that percentile. Without it the noise hid 41 of 119 rim candidates of the
-// noisy holey triple torus (seed 4) and the flood entered its tube. sigma / s is the cloud's
-// median: a crease inflates the local PCA "noise" as much as noise does (0.34-0.40 at the
-// creases of the clean double and triple tori, where the local ratio let 2 crease points in
-// as rims, and more steps followed), and scanner noise is a property of the scan.
+// The allowance is calibrated (docs/calibration.md). sigma / s is the cloud's median: a crease
+// inflates the local PCA "noise" as much as noise does, and scanner noise is a property of
+// the scan.
 template <int D>
 double rim_smoothness(const LocalSampling<D>& sampling, const TileRuns& tiles) {
   std::vector<double> ratio2(sampling.noise.size());
@@ -98,11 +94,8 @@ double rim_smoothness(const LocalSampling<D>& sampling, const TileRuns& tiles) {
 // neighbours' normals agree, and which have D - 1 more such points among their k nearest.
 // Among 31 random neighbours the largest gap exceeds 120 degrees at 31 (2/3)^30 = 1.6e-4 of
 // the points inside a surface; a point within about a spacing of a hole's edge sees the hole
-// wider than that. A knife edge looks open too (its disc ran on past the bunny's ear tip, +15%
-// Hausdorff distance); and a rim runs on through each of its points, where the rare wide gaps
-// inside are scattered (with one more point instead of D - 1, 15 of them on the 200k bunny held
-// the front off and took 26 steps instead of 14; their discs, bent to 16-point quadrics,
-// extrapolate 20 spacings).
+// wider than that. A knife edge looks open too (its disc runs on past the edge); and a rim
+// runs on through each of its points, where the rare wide gaps inside are scattered.
 template <int D>
 std::vector<char> confirmed_rims(const NearestPointIndex<D>& data, const std::vector<char>& open,
                                  const LocalSampling<D>& sampling, const LargeVector<Index>& neighbours, int k,

@@ -82,7 +82,7 @@ struct LocalSampling {
   static constexpr double kRimGap = 2.09;  ///< radians (120 degrees); pi on a straight rim
   static constexpr int kRimNeighbours = 32;
   /// mean |cos| of the angles between a rim point's normal and its neighbours' at least
-  /// (18 degrees on average): 0.985-1 on the holes' rims of a clean torus, 0.91-1 noisy; less
+  /// (18 degrees on average; calibrated, docs/calibration.md); less
   /// an allowance for the noise's scatter of the normals, 0.6 (sigma / s)^2 with the cloud's
   /// median sigma / s (local_sampling.cpp)
   static constexpr double kRimSmoothness = 0.95;

@@ -91,8 +91,7 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
   LeftOut<D> out;
   out.kept = mesh_resolution_sample<D>(data, point_scale, raised, sampling.scan_lines, threads, halo);
   // Every rim point stays (a line's worth): the discs over holes and the closure of open sides
-  // stand on them (measured: thinned, a double torus scanned from above opened a handle under
-  // its unseen side).
+  // stand on them.
   std::vector<char> is_kept(point_scale.size(), 0);
   for (const Index j : out.kept) is_kept[std::size_t(j)] = 1;
   for (std::size_t i = first; i < end; ++i) is_kept[i] = is_kept[i] || (!sampling.rim.empty() && sampling.rim[i]);
@@ -106,10 +105,9 @@ LeftOut<D> keep_mesh_resolution(NearestPointIndex<D>& data, LocalSampling<D>& sa
   if (sum_over_workers(x, out.kept.size()) == (halo ? halo->global_size : point_scale.size())) return {};
   // Each point left out stands with its nearest kept point. On a curve, within its mesh size:
   // there the random choice's gaps are exponential, one in 55 over the 4 sizes through which the
-  // tagged start's flood passes (the 20k-point 2D star gave 233 slivers), so the points left
-  // out farther than their size come back. On a surface, holes that wide are e^(-4 pi) rare,
-  // and the points farther than a size are mostly the noise's and the other views' (the 10M
-  // torus scan, covered: Hausdorff distance 1.7x). docs/how-it-works.md.
+  // tagged start's flood passes, so the points left out farther than their size come back. On a
+  // surface, holes that wide are e^(-4 pi) rare, and the points farther than a size are mostly
+  // the noise's and the other views'.
   std::optional<NearestPointIndex<D>> kept;
   const std::vector<Index> far = stand_with_nearest(data, raised, is_kept, out, kept, threads, halo);
   if (sum_over_workers(x, far.size()) > 0) {

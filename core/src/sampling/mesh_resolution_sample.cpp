@@ -15,7 +15,7 @@ namespace {
 // that on scan lines they reach the next lines.
 template <int D>
 constexpr int kDensityNeighbours = D == 2 ? 10 : 30;
-// Points measured per query: bounds the neighbour lists (2.4 GB for 10M points at once).
+// Points per query: bounds the neighbour lists (2.4 GB for 10M points at once).
 constexpr std::size_t kBlock = std::size_t(1) << 16;
 
 // A uniform number in [0, 1) from the index (splitmix64's finaliser).

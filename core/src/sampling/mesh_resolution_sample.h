@@ -7,8 +7,7 @@
 /// resolution 256), the scale of a point is raised to that size (data_mesh.h), but a fit
 /// through its k nearest spans a fraction of a mesh cell. Two views registered a cell apart
 /// then read as two sheets, each followed by its own fits, and the blend puts a film of outside
-/// between them: specks of solid beside the surface (measured on the 3M torus line scan, where
-/// every fit widened to 480 points removed them). Thinned to one point per scale, a fit's k
+/// between them: specks of solid beside the surface. Thinned to one point per scale, a fit's k
 /// neighbours span k scales as on any cloud sampled at that scale, both sheets enter it, and
 /// its noise (residual_noise.h) reads their spread as thickness: the surface goes between them.
 ///
@@ -17,7 +16,7 @@
 /// to the gap between the lines (local_sampling.h) while the points lie 3-10 times closer along
 /// them: there the spacing's share kept 72% of a 1M-point line scan of a sphere where its
 /// density asks for a third. On scan lines the spacing's sample is thinned further by its own
-/// density, measured by the distance r_k to the k-th nearest in it (the point and k - 1
+/// density, read from the distance r_k to the k-th nearest in it (the point and k - 1
 /// others): 6 others (LocalSampling::kSpacingRank) within l against k - 1 within r_k, a share
 /// of (6 / (k - 1)) (r_k / l)^2 (in 2D (2 / (k - 1)) (r_k / l)), at most all of it. On i.i.d.
 /// samples pi rho r_k^2 is Gamma(k - 1)-distributed (rho: the sample's density), so there that

@@ -2,11 +2,8 @@
 /// @file residual_noise.h
 /// @brief The noise of each point as a quadric fit sees it: the spread of its neighbours about a
 /// quadric height field, which curvature does not raise. LocalSampling::noise (the thickness of
-/// the PCA neighbourhood) counts the bend of a curved or creased part as noise: measured on
-/// the clean 20k bunny, 38% of the points read above 5% of their spacing, the level from which
-/// the fits widen as if the data were noisy (quadric_implicit.h), against 23% here (at the
-/// creases of its facets); on its clean Loop-subdivided version 25% against 5%; on a clean
-/// random sphere of radius 5.8 spacings 0.06 spacings against 0.001.
+/// the PCA neighbourhood) counts the bend of a curved or creased part as noise, and the fits
+/// would widen on clean curved data as if it were noisy (quadric_implicit.h).
 #pragma once
 
 #include "geometry/nearest_point_index.h"
@@ -20,8 +17,7 @@ namespace lsr {
 /// unbiased for its degrees of freedom, median-filtered over the same neighbours, then scaled
 /// by sqrt((K - D) / K), K = LocalSampling::kNeighbours (the degrees of freedom that K points'
 /// PCA keeps), so that the fits' constants, set on PCA's reading, keep their meaning on noisy
-/// data (measured, median over the cloud: 1.04 times PCA's reading on the noisy bunny and on
-/// its Loop-subdivided version, 1.10 on a noisy flat sheet, where PCA reads 0.82 sigma).
+/// data.
 /// @param normals #N unit normals, consistently oriented (neighbours facing the other way, the
 ///        other side of a thin part, are left out)
 /// @param k neighbours per fit, the point itself included

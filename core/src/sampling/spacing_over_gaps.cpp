@@ -42,20 +42,16 @@ double empty_disc_radius(const Points<D>& p, const Index* nearest, int k, std::s
 // next line (CGAL's raw scans and the simulated ones). Their spacing is the line's, and their
 // PCA normal is any direction across the line. A cloud is taken as scan lines when its median
 // elongation (spread across the line over spread along it, of the kNeighbours nearest) is below
-// kScanLineElongation: 0.58 on i.i.d. samples of every corpus shape, clean or noisy, and 0.72
-// on an isotropic raster; 0.18-0.24 on 60 x 600 line scans (measured, 20-45k points). Then
+// kScanLineElongation (calibrated, docs/calibration.md). Then
 // normals and noise come from kHoleNeighbours, which reach the next lines, and the spacing is at
 // least the radius of the largest empty disc among them (median-filtered) over
 // kHoleToSpacing. i.i.d. samples are left as they were.
 //
 // Denser lines hide their elongation in their noise: when the range noise exceeds the spacing
 // along a line, the k nearest are a noisy piece of one line, spread along it and along the
-// normal, and their PCA normal lies across the line in the tangent plane. On a 1M-point scan of
-// a sphere (6 views, 300 x 3000 lines) the median elongation was 0.67, 45% of the 16-NN normals
-// were more than 45 degrees off the true normal, and 1% of the 32-NN ones. Such a cloud shows
-// itself by its narrow and wide normals disagreeing: the fraction of points where they are
-// more than 45 degrees apart was 0.40 there and 0.23-0.26 on 60 x 600 scans, against at most
-// 0.01 on i.i.d. samples (clean or noisy, sphere and bunny) and on CGAL's raw scans (measured);
+// normal, and their PCA normal lies across the line in the tangent plane. Such a cloud shows
+// itself by its narrow and wide normals disagreeing (more than 45 degrees apart at a share of
+// its points well above the i.i.d. samples' and the single views');
 // above kScanLineDisagreement the cloud is read as scan lines too. Checked on every 8th point.
 template <int D>
 bool normals_disagree(const NearestPointIndex<D>& data, const LocalSampling<D>& s, int threads, const TileRuns& tiles) {

@@ -2,7 +2,7 @@
 /// @file cavity_sealing.h
 /// @brief Takes back from a wall flood (outside_flood_fill.h) the cavities it entered through an
 /// opening narrower than the widest hole spanned: the inside of an object whose open end a
-/// sampling hole took (a limb's tip), which tangent discs cannot cap, as they continue the
+/// sampling hole took (a thin tube's tip), which tangent discs cannot cap, as they continue the
 /// tube instead of closing it.
 ///
 /// A flood that stays a gap from the data slips through any opening wider than twice the gap;

@@ -34,7 +34,7 @@ Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, con
 
 namespace {
 // A bound on the work, not a threshold: a region flipped by the spanning tree wears down by
-// about a probe distance per pass (two spacings); Berger et al.'s anchor needed 14 passes.
+// about a probe distance per pass (two spacings): 32 passes undo a region 64 spacings across.
 constexpr int kConsistencyPasses = 32;
 }  // namespace
 

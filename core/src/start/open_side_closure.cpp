@@ -24,30 +24,24 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kSideNeighbours = 16;
 // The flood's edge: reached vertices up to kBandWidth local scales past its gap. A point looks
 // for it within that radius, which sees across a sheet (and registration layers) thinner than
-// kBandWidth scales but not across a closed thin wall: one scale more took the i.i.d. cup's
-// walls (26% of its points) for sheets.
+// kBandWidth scales but not across a closed thin wall (calibrated).
 constexpr double kBandWidth = 1.5;
 constexpr int kSidePasses = 16;
 constexpr std::size_t kGateStride = 8;
 // Path lengths from the walls to a point's two sides closer than this share of their sum say
-// nothing of which side is out: measured on a 20k torus with 4 holes (noise 0.25%), 2,030 of
-// the 2,052 points the path rule orients inwards lie below 0.2, and 6,443 of the 17,948 right ones.
+// nothing of which side is out (calibrated, docs/calibration.md).
 constexpr double kAmbiguousPaths = 0.2;
 // At least this share of the two-sided points with ambiguous paths: the paths tell no side
 // anywhere, as on a single view, whose sheet the flood reaches round its rim from both sides
-// alike (CGAL's hippo1 1.00, hippo2 0.94; scans from above with 6 views 0.20-0.72).
+// alike (calibrated).
 constexpr double kSingleViewShare = 0.85;
-// The pocket's median winding number above which the data are closed up to holes: 1.017-1.033
-// on the i.i.d. corpus with 4 holes (11 shapes), 0.70-0.90 under open undersides (11 shapes
-// scanned from above), 0.53-0.78 on CGAL's single-view scans.
+// The pocket's median winding number above which the data are closed up to holes (calibrated).
 constexpr double kClosedWinding = 0.95;
 // The pocket's winding number on a single view. A view sees the half of a body that faces it,
 // which covers less than half of the directions from the body's unseen half: {w > 1/2} ends at
-// the disc spanning the view's rim, and gaps in the view cut it into pieces (CGAL's hippo1:
-// 3 parts). From the far pole of a sphere seen from one side, the seen half covers the cone
+// the disc spanning the view's rim, and gaps in the view cut it into pieces. From the far pole of a sphere seen from one side, the seen half covers the cone
 // of 45 degrees round the axis, (1 - cos 45 deg) / 2 = 0.1464 of the directions, and more from
-// every other point of the ball: {w > 0.1464} is the whole ball. Measured on half of a 2:1:1
-// ellipsoid seen from its side, cut by a gap: 1.09 times the ellipsoid's volume.
+// every other point of the ball: {w > 0.1464} is the whole ball.
 constexpr double kSingleViewWinding = 0.1464;
 
 // Whether a two-sided point's path lengths from the walls say nothing of which side is out.
@@ -66,8 +60,8 @@ int side_of(const Vec<D>& x, const Vec<D>& p, const Vec<D>& n) {
 }
 
 // On a single view the paths tell no side, and the shorter one flips the senses at random along
-// the sheet (hippo1: 71% agree with the normals the file carries). There the senses follow
-// the normals' smoothest paths instead (normal_propagation.h; hippo1: 89% agree), each tree's
+// the sheet. There the senses follow the normals' smoothest paths instead
+// (normal_propagation.h), each tree's
 // overall sense the paths' vote, weighted by how much they differ.
 template <int D>
 void propagate_single_view_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, const std::vector<double>& g_plus,

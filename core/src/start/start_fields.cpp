@@ -51,8 +51,7 @@ Eigen::VectorXd flood_distance(const SimplexMesh<D>& mesh, const VertexNeighbour
 
 // Open sides are found on a flood the tangent discs do not stop. Discs that span an open side
 // keep the flood out of it, and the front then crumples over them and tunnels between the scan
-// lines from inside (two spheres scanned from above: 5 two-sided points of 41k with discs,
-// 40,792 without; merged, genus 9). Data closed up to holes the discs span are left to the
+// lines from inside. Data closed up to holes the discs span are left to the
 // discs (close_open_sides: the pocket's membrane is flat where the discs follow the surface).
 template <int D>
 void find_open_sides(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const Eigen::VectorXd& distance,

@@ -13,10 +13,9 @@
 /// lie in the sheets and the gap stays open, and at a concave crease a face's disc continues
 /// into the material, not the air. In the reconstruction only the rim points carry discs
 /// (LocalSampling::rim): every other point is its own surface, and discs of noisy points stood
-/// off it by up to a spacing (measured: docs/how-it-works.md). A closing by empty balls of radius H (the
-/// earlier rule) filled every gap narrower than 2 H, close sheets and creases included. Flat
-/// discs stood off convex parts by kappa r^2 / 2 and bridged the close strands of a thin
-/// knotted tube (measured).
+/// off it by up to a spacing. A closing by empty balls of radius H would fill every gap
+/// narrower than 2 H, close sheets and creases included; flat discs stand off convex parts by
+/// kappa r^2 / 2 and bridge close strands.
 #pragma once
 
 #include "sampling/local_sampling.h"
@@ -28,7 +27,7 @@ namespace lsr {
 /// Discs examined per query: its nearest points. Over a hole those are the near side of its rim,
 /// whose discs reach across it; over sampled parts the nearest discs are the nearest surface.
 /// A radius search over every disc that could reach (all points within the largest radius plus
-/// the query's distance) took a third of the run at 20k points (measured: 1-3 s).
+/// the query's distance) took a third of the run.
 constexpr int kDiscNeighbours = 32;
 
 /// @brief Distance from each query whose point_distance is at most cap to the union of the
@@ -52,7 +51,7 @@ std::vector<double> tangent_disc_distance(const NearestPointIndex<D>& data, cons
 /// direction of the height field, half-axis min(radius, 1 / |kappa_i|). Beyond about one
 /// radius of curvature a quadric no longer follows a round surface (a tube's quadric at
 /// 1 / kappa from its point lies 0.12 / kappa outside the tube); along a flat direction (a
-/// limb's axis) the disc reaches the full radius, across a joint where a hole may sit.
+/// tube's axis) the disc reaches the full radius, across a joint where a hole may sit.
 template <int D>
 Eigen::Matrix<double, D - 1, D - 1> disc_shape(const HeightField<D>& f, double radius);
 

@@ -4,8 +4,7 @@
 /// fairing moved, and where the fit's normal points against the vertex's facets. The
 /// projection onto the fit gives each vertex the normal of the fits blended there, which
 /// belongs to another sheet where two lie within a fit's reach or the fit extrapolates (a
-/// sparse cloud seen at grazing angles): measured on CGAL's hippo1, 2984 of 37664 output
-/// normals pointed into the surface, dark spots in a rendering.
+/// sparse cloud seen at grazing angles): there it points into the surface.
 #pragma once
 
 #include "lsrecon/core/level_set_extraction.h"

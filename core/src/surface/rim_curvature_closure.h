@@ -2,9 +2,7 @@
 /// @file rim_curvature_closure.h
 /// @brief Rounds the unseen parts of a surface to the curvature of the seen surface around
 /// them. The front closes an unseen underside by its curvature alone: a minimal surface, flat
-/// across a tube's or a sphere's underside where the object goes on curving (measured, scans
-/// from above: the linked rings' and the trefoil's tubes came out with flat bottoms, 1.6-1.9x
-/// the Chamfer distance of Poisson given the true normals). Each unseen part becomes a
+/// across a tube's or a sphere's underside where the object goes on curving. Each unseen part becomes a
 /// surface of constant mean curvature H on the uniform Laplacian of the surface's edges,
 ///   x_v - mean of x_w over v's neighbours w = (m_v / 2) H n_v,
 /// m_v the mean squared length of v's edges, n_v its normal: points on a sphere of radius R
@@ -13,7 +11,7 @@
 /// alike in every direction. H is the one that balances the part closed tangent to the seen
 /// surface at its rim (the conormal's integral over the rim against the vector area), so a
 /// tube's strip and a sphere's cap get their own curvature back, and a flat bottom between
-/// walls that come level at the rim (a cup's) stays flat; never below 0 (a hollow's lid is not
+/// walls that come level at the rim (a vessel's) stays flat; never below 0 (a hollow's lid is not
 /// drawn in). Derivation and measurements: docs/how-it-works.md (Unsupported surface).
 #pragma once
 

@@ -3,14 +3,12 @@
 /// @brief Fairs the parts of a surface that no sample lies near: the back of a single view, an
 /// unseen underside, a cavity seen only at grazing angles. Nothing places the surface there but
 /// the front's curvature and the switches between the fit and the front, whose zero sets come
-/// out as terraces and folds an edge or a few high (measured: CGAL's hippo1, whose back and
-/// legs were crumpled, with facets turned inside out). One implicit step of the bilaplacian
+/// out as terraces and folds an edge or a few high. One implicit step of the bilaplacian
 /// flow on the surface's edge graph, (I + t L^2) x = x0 at those vertices, the others fixed,
 /// damps a wave of w edges by 1 / (1 + t l^2), l = 4 (1 - cos(2 pi / w)) on a regular grid: at
 /// t = 4, waves of 2 and 4 edges (terraces, folds) by 257x and 65x, of 8 edges 6.5x, of 32 by
-/// 2.4% and of 64 by 0.15%, so the shape the supported part around sets is kept (the Laplacian's
-/// step, (I + 16 L) x = x0, flattened the unseen underside of a sphere scanned from above:
-/// Chamfer distance 1.6x; the bilaplacian's at t = 16 shrank it by a tenth, 1.14x).
+/// 2.4% and of 64 by 0.15%, so the shape the supported part around sets is kept (t is
+/// calibrated: docs/calibration.md).
 /// Derivation: docs/how-it-works.md (Unsupported surface).
 #pragma once
 

@@ -3,9 +3,7 @@
 /// @brief Removes the closed parts of a level set that no sample is nearest to. Every part of a
 /// reconstruction must explain some data; a solid or a void whose boundary is the nearest
 /// surface to fewer than D + 1 samples (which span no volume) is a guess of the solver, not
-/// something the data showed (measured: a clean random draw of the Loop-subdivided bunny got
-/// a sliver of solid 27 vertices large, 0.9 to 1.8 spacings past an ear tip, nearest to none
-/// of its 20,000 samples).
+/// something the data showed.
 #pragma once
 
 #include "lsrecon/core/level_set_extraction.h"

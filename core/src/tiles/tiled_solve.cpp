@@ -28,9 +28,7 @@ namespace {
 
 // Beyond its region a tile's mesh follows the data at this size, which is what carries the
 // inside/outside decision of the whole box to its own flood: the coarsest finest size
-// quartered (1/128 in 3D). Measured: at 1/64 the tiles' fronts of CGAL's hippo2 (a single
-// view) had genus 42 where one mesh's has 0 (at 1/128: 0), of the torus scanned from above
-// genus 10 where one mesh's has 3 (at 1/128: 4).
+// quartered (1/128 in 3D; calibrated).
 template <int D>
 constexpr double kCoarseSize = automatic_defaults(D).coarsest_finest_size / 4.0;
 
@@ -160,11 +158,9 @@ TileOutput<D> solve_tile(int t, const SampledData<D>& sampled, const Reconstruct
   tr.mesh_simplices = Index(adaptive.mesh.simplices.size());
   clock.end("mesh");
   // Its stopping test reads its core and half its margin: not the coarse part, whose front is
-  // other tiles' to place, nor the fine front next to it, which the coarse one holds back
-  // (measured: tested in the whole region, the 2D star's tiles did not converge); not its
-  // core alone either: the front it keeps must have settled where its neighbours' fronts meet
-  // it (measured: tested in their cores, the tiles round the neck of two close spheres kept
-  // steps with and without the neck, and welded a handle).
+  // other tiles' to place, nor the fine front next to it, which the coarse one holds back; not
+  // its core alone either: the front it keeps must have settled where its neighbours' fronts
+  // meet it.
   const TileBox<D> tested = tile_box<D>(t, k, margin / 2.0);
   const std::array<Vec<D>, 2> region{tested.region_lo, tested.region_hi};
   FrontOnMesh<D> front = front_on_mesh(sampled, scale, adaptive, to, hole_radius, custom_start, tr, tile_progress, clock, &region);
