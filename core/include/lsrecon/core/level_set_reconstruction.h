@@ -7,7 +7,7 @@
 /// weight beta = 1 bridges concavities: they stall beta |kappa| / alpha outside the data
 /// (docs/design.md section 9). Every length here follows the local sampling of the data (see
 /// ReconstructionOptions); the front finds the topology, and a fit through the data places the
-/// surface. docs/how-it-works.md lists the measured departures from the paper.
+/// surface. docs/how-it-works.md explains each stage and where it departs from the paper.
 #pragma once
 
 #include "lsrecon/core/progress.h"
