@@ -113,11 +113,19 @@ void write_convergence_svg(const std::string& path, const std::string& title, co
 }
 
 // Child: one case, one method; prints one CSV row.
-// A user's file: the points only. Without ground truth the distance columns stay empty.
+// A user's file: the points, and the normals a PLY file carries (a scanner's: poisson8-true is
+// then Poisson given them). Without ground truth the distance columns stay empty.
 lsr::demos::CompareCase file_case(const std::string& path) {
   lsr::demos::CompareCase c;
   c.name = "file";
   c.points = lsr::adapters::read_point_file(path).points;
+  pcl::PCLPointCloud2 cloud;
+  if (lsr::adapters::file_extension(path) == "ply" && pcl::io::loadPLYFile(path, cloud) == 0 &&
+      pcl::getFieldIndex(cloud, "normal_x") >= 0 && std::size_t(cloud.width) * cloud.height == c.points.size()) {
+    pcl::PointCloud<pcl::Normal> normals;
+    pcl::fromPCLPointCloud2(cloud, normals);
+    for (const auto& n : normals) c.normals.emplace_back(n.normal_x, n.normal_y, n.normal_z);
+  }
   Eigen::Vector3d lo = c.points.at(0), hi = c.points.at(0);
   for (const auto& p : c.points) {
     lo = lo.cwiseMin(Eigen::Vector3d(p));
@@ -161,13 +169,48 @@ void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertice
   }
 }
 
+// The surface's area, and the share of it farther than 2 spacings (the median distance to
+// the 8th nearest point) from every point, by facet centroids: where the surface is a guess.
+struct SupportFigures {
+  double area = 0.0, far_share = 0.0;
+};
+
+SupportFigures support_figures(const lsr::Points<3>& vertices, const std::vector<std::array<lsr::Index, 3>>& triangles,
+                               const lsr::Points<3>& points) {
+  SupportFigures f;
+  if (triangles.empty() || points.size() < 9) return f;
+  const lsr::NearestPointIndex<3> data(points);
+  lsr::LargeVector<lsr::Index> knn;
+  data.query_k(points, 9, knn);  // the point itself first
+  std::vector<double> eighth(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) eighth[i] = (points[std::size_t(knn[9 * i + 8])] - points[i]).norm();
+  std::nth_element(eighth.begin(), eighth.begin() + long(eighth.size() / 2), eighth.end());
+  const double spacing = eighth[eighth.size() / 2];
+  lsr::Points<3> centroids;
+  std::vector<double> area;
+  for (const auto& t : triangles) {
+    const lsr::Vec<3>&a = vertices[std::size_t(t[0])], &b = vertices[std::size_t(t[1])], &c = vertices[std::size_t(t[2])];
+    centroids.push_back((a + b + c) / 3.0);
+    area.push_back(0.5 * (b - a).cross(c - a).norm());
+  }
+  std::vector<double> distance;
+  data.query(centroids, distance);
+  double far = 0.0;
+  for (std::size_t k = 0; k < area.size(); ++k) {
+    f.area += area[k];
+    if (distance[k] > 2.0 * spacing) far += area[k];
+  }
+  f.far_share = f.area > 0.0 ? far / f.area : 0.0;
+  return f;
+}
+
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
                                         ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed),
                                                                  s.scanner.views > 0 ? &s.scanner : nullptr)
                                         : file_case(s.input);
   if (method == "poisson8-true" && c.normals.empty()) {
-    std::printf("%s,%s,%zu,,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
+    std::printf("%s,%s,%zu,,,,,,,,,,,,,,no true normals\n", case_name.c_str(), method.c_str(), c.points.size());
     return 0;
   }
   if (s.save_points && s.input.empty()) lsr::adapters::write_points(s.out + "/" + case_name + "-points.ply", c.points);
@@ -206,11 +249,12 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     std::snprintf(text, sizeof text, format, v);
     return c.sdf ? std::string(text) : std::string("n/a");
   };
-  std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%zu,%d,%s,%zu,%s\n", case_name.c_str(), method.c_str(),
+  const SupportFigures support = support_figures(vertices, triangles, c.points);
+  std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%zu,%d,%s,%zu,%.6g,%.4f,%s\n", case_name.c_str(), method.c_str(),
               c.points.size(), seconds, memory, metric(d.chamfer / c.diagonal, "%.3e").c_str(),
               metric(d.hausdorff / c.diagonal, "%.3e").c_str(), metric(d.normal_consistency, "%.3f").c_str(),
               int(t.watertight), int(t.edge_manifold && t.vertex_manifold), intersecting, t.components, genus.c_str(),
-              triangles.size(), p.note.c_str());
+              triangles.size(), support.area, support.far_share, p.note.c_str());
   return 0;
 }
 
@@ -231,7 +275,7 @@ std::string child_row(const char* self, const Settings& s, const std::string& ca
   char buffer[4096];
   while (pipe && std::fgets(buffer, sizeof buffer, pipe)) row = buffer;
   const int status = pipe ? pclose(pipe) : -1;
-  if (status != 0 || row.empty()) return case_name + "," + method + ",,,,,,,,,,,,,failed (exit " + std::to_string(status) + ")\n";
+  if (status != 0 || row.empty()) return case_name + "," + method + ",,,,,,,,,,,,,,,failed (exit " + std::to_string(status) + ")\n";
   return row;
 }
 
@@ -264,7 +308,7 @@ std::string median_run(std::vector<std::string> runs) {
 // lsrecon (its front in tiles against one mesh) with the Chamfer distances' ratio too.
 void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
   struct Figures {
-    double seconds, mib, chamfer;
+    double seconds, mib, chamfer, area;
   };
   std::map<std::string, std::map<std::string, Figures>> figures;  // case -> method
   for (const auto& row : rows) {
@@ -276,8 +320,21 @@ void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
     std::getline(in, seconds, ',');
     std::getline(in, memory, ',');
     std::getline(in, chamfer, ',');
+    std::string area;
+    for (int k = 6; k <= 14; ++k) std::getline(in, area, ',');  // column 14: the area
     const double c = chamfer.empty() || chamfer == "n/a" ? std::nan("") : std::atof(chamfer.c_str());
-    if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str()), c};
+    const double a = area.empty() ? std::nan("") : std::atof(area.c_str());
+    if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str()), c, a};
+  }
+  // The area against Poisson given the true (or the scanner's) normals: flaps and fins add area.
+  bool area_header = false;
+  for (const auto& [name, methods] : figures) {
+    if (!methods.count("lsrecon") || !methods.count("poisson8-true") || !(methods.at("poisson8-true").area > 0.0)) continue;
+    if (!area_header) md << "\n| case | area lsrecon / poisson8-true |\n|---|--:|\n";
+    area_header = true;
+    char line[96];
+    std::snprintf(line, sizeof line, "| %s | %.3f |\n", name.c_str(), methods.at("lsrecon").area / methods.at("poisson8-true").area);
+    md << line;
   }
   for (const std::string compared : {"poisson8", "poisson8-mt", "lsrecon-tiles"}) {
     const bool tiles = compared == "lsrecon-tiles";
@@ -307,8 +364,8 @@ void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
 void write_markdown(const std::string& path, const std::vector<std::string>& rows, const Settings& s) {
   std::ofstream md(path);
   md << "| case | method | points | seconds | peak MiB | Chamfer / diag | Hausdorff / diag | normal consistency | "
-        "watertight | manifold | intersecting pairs | components | genus | triangles | note |\n"
-     << "|---|---|--:|--:|--:|--:|--:|--:|:-:|:-:|--:|--:|--:|--:|---|\n";
+        "watertight | manifold | intersecting pairs | components | genus | triangles | area | far from data | note |\n"
+     << "|---|---|--:|--:|--:|--:|--:|--:|:-:|:-:|--:|--:|--:|--:|--:|--:|---|\n";
   for (const auto& row : rows) {
     std::stringstream in(row);
     std::string cell;
@@ -421,7 +478,7 @@ int main(int argc, char** argv) {
     }
     std::ofstream csv(s.out + "/results.csv");
     csv << "case,method,points,seconds,peak_mib,chamfer_rel,hausdorff_rel,normal_consistency,watertight,manifold,"
-           "intersecting_pairs,components,genus,triangles,note\n";
+           "intersecting_pairs,components,genus,triangles,area,far_share,note\n";
     for (const auto& r : rows) csv << r;
     write_markdown(s.out + "/results.md", rows, s);
     std::fprintf(stderr, "wrote %s/results.md, results.csv and the meshes\n", s.out.c_str());
