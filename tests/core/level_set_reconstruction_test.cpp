@@ -40,6 +40,23 @@ double max_distance(const Points<D>& from, const NearestPointIndex<D>& to) {
   return *std::max_element(d.begin(), d.end());
 }
 
+// The matrix overloads (libigl's convention: one point per row) give what the point lists give.
+TEST(LevelSetReconstruction, RowsOfAMatrixGiveWhatTheirPointsGive) {
+  const Points<3> sphere = Sphere{Vec<3>(0.1, 0.2, 0.3), 1.0}.sample(2000);
+  Eigen::MatrixX3d v(Eigen::Index(sphere.size()), 3);
+  for (std::size_t i = 0; i < sphere.size(); ++i) v.row(Eigen::Index(i)) = sphere[i].transpose();
+  const ReconstructionResult<3> a = reconstruct(v), b = reconstruct<3>(sphere);
+  ASSERT_FALSE(a.surface.facets.empty());
+  EXPECT_EQ(a.surface.facets, b.surface.facets);
+  EXPECT_EQ(a.surface.vertices, b.surface.vertices);
+  const Eigen::Ref<const Eigen::MatrixX3d> ref(v);
+  EXPECT_EQ(reconstruct(ref).surface.facets, b.surface.facets);
+  Eigen::MatrixX2d c(64, 2);
+  for (Eigen::Index i = 0; i < 64; ++i) c.row(i) << std::cos(0.1 * double(i)), std::sin(0.1 * double(i));
+  const ReconstructionResult<2> curves = reconstruct(c);
+  EXPECT_EQ(curves.loops.size(), 1u);
+}
+
 TEST(LevelSetReconstruction, ConcaveStarConvergesToOneCurveWithinTwoHmin) {
   const Points<2> truth = star(100000);
   const Points<2> data = star(4000);

@@ -16,6 +16,7 @@
 #include "lsrecon/core/types.h"
 
 #include <functional>
+#include <type_traits>
 
 namespace lsr {
 
@@ -26,6 +27,17 @@ namespace lsr {
 template <int D>
 ReconstructionResult<D> reconstruct(const Points<D>& points, const ReconstructionOptions& options = {},
                                     const ProgressCallback& progress = {});
+
+/// @brief reconstruct() on the rows of a matrix, as libigl takes points (an Eigen::MatrixX3d, a
+/// Map or an Eigen::Ref of one): #N x 3 gives a surface, #N x 2 closed curves. The column count
+/// must be known at compile time: pass a dynamic-width Eigen::MatrixXd as V.leftCols<3>().
+template <class Derived, int C = Derived::ColsAtCompileTime, std::enable_if_t<C == 2 || C == 3, int> = 0>
+ReconstructionResult<C> reconstruct(const Eigen::MatrixBase<Derived>& points, const ReconstructionOptions& options = {},
+                                    const ProgressCallback& progress = {}) {
+  Points<C> rows(std::size_t(points.rows()));
+  for (Eigen::Index i = 0; i < points.rows(); ++i) rows[std::size_t(i)] = points.row(i).transpose();
+  return reconstruct<C>(rows, options, progress);
+}
 
 /// @brief A signed distance (or any function negative inside, positive outside, with a regular
 /// zero set) in the input's coordinates.
