@@ -36,6 +36,12 @@ TEST(ResolutionHierarchy, ThreeLevelsOfARandomTorusAreClosedAndFinerEachTime) {
   EXPECT_THROW(reconstruct_levels<3>(points, 9), InvalidInput);
 }
 
+TEST(ResolutionHierarchy, LengthsInTheInputsUnitsAreRefused) {
+  ReconstructionOptions o;
+  o.lengths = LengthUnit::input;
+  EXPECT_THROW(reconstruct_levels<3>(Sphere{Vec<3>(0, 0, 0), 1.0}.sample(500), 2, o), InvalidInput);
+}
+
 TEST(ResolutionHierarchy, OneLevelIsThePlainReconstruction) {
   const Points<2> points = sample_star(3000, Vec<2>(0, 0), 1.0);
   const auto one = reconstruct_levels<2>(points, 1);

@@ -34,6 +34,10 @@ std::vector<ReconstructionResult<D>> reconstruct_levels(const Points<D>& points,
                                                         const ReconstructionOptions& options, bool warm_start,
                                                         const ProgressCallback& progress) {
   if (levels < 1 || levels > 8) throw InvalidInput("levels must be between 1 and 8", "use e.g. 3");
+  // The levels' resolutions are set in the unit box, where the solver works.
+  if (options.lengths != LengthUnit::unit_box) {
+    throw InvalidInput("levels of detail take their lengths in the unit box", "set ReconstructionOptions::lengths to unit_box");
+  }
   const double cap = options.mesh.max_resolution > 0.0 ? options.mesh.max_resolution : automatic_defaults(D).max_resolution;
   const double finest = std::min(cap, options.mesh.h_min > 0.0 ? 1.0 / options.mesh.h_min : data_resolution(points, options.limits.threads));
   std::vector<ReconstructionResult<D>> out;

@@ -250,6 +250,7 @@ struct ReconstructionOptions {
   /// The unit of sampling.hole_radius, mesh.h_min, mesh.max_resolution (per length),
   /// evolution.curvature_weight (length^2) and stopping.tolerance. The other lengths stay in
   /// the unit box: their defaults are unit-box values. Time (alpha, time_step) has no length.
+  /// reconstruct_levels() takes the unit box only.
   LengthUnit lengths = LengthUnit::unit_box;
 };
 
