@@ -2,6 +2,8 @@
 /// @file open_side_closure.cpp
 #include "start/open_side_closure.h"
 
+#include "graph/shortest_paths.h"
+
 #include "mesh/vertices_near.h"
 #include "start/outside_flood_fill.h"
 #include "start/normal_propagation.h"
@@ -14,7 +16,6 @@
 
 #include <limits>
 #include <memory>
-#include <queue>
 #include <utility>
 
 namespace lsr::detail {
@@ -79,34 +80,12 @@ void propagate_single_view_senses(const Points<D>& points, const Points<D>& norm
   }
 }
 
-// Path length from the walls through the reached vertices (Dijkstra on the mesh's edges).
+// Path length from the walls through the reached vertices, over the mesh's edges.
 template <int D>
 std::vector<double> distance_from_walls(const SimplexMesh<D>& mesh, const VertexNeighbours& n, const std::vector<char>& reached) {
-  const std::size_t nv = mesh.vertices.size();
-  std::vector<double> g(nv, kInf);
-  using Entry = std::pair<double, Index>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;  // ties by index: deterministic
-  for (std::size_t v = 0; v < nv; ++v) {
-    if (reached[v] && on_wall<D>(mesh.vertices[v])) {
-      g[v] = 0.0;
-      queue.emplace(0.0, Index(v));
-    }
-  }
-  while (!queue.empty()) {
-    const auto [gv, v] = queue.top();
-    queue.pop();
-    if (gv > g[std::size_t(v)]) continue;
-    for (Index k = n.offsets[std::size_t(v)]; k < n.offsets[std::size_t(v) + 1]; ++k) {
-      const Index w = n.neighbours[std::size_t(k)];
-      if (!reached[std::size_t(w)]) continue;
-      const double gw = gv + (mesh.vertices[std::size_t(w)] - mesh.vertices[std::size_t(v)]).norm();
-      if (gw < g[std::size_t(w)]) {
-        g[std::size_t(w)] = gw;
-        queue.emplace(gw, w);
-      }
-    }
-  }
-  return g;
+  std::vector<char> walls(mesh.vertices.size(), 0);
+  for (std::size_t v = 0; v < walls.size(); ++v) walls[v] = reached[v] && on_wall<D>(mesh.vertices[v]);
+  return shortest_paths(mesh.vertices, n.offsets, n.neighbours, walls, reached);
 }
 
 // The flood's edge seen from the data: per point, the shortest path from the walls to the

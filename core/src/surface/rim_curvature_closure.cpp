@@ -2,6 +2,7 @@
 /// @file rim_curvature_closure.cpp
 #include "surface/rim_curvature_closure.h"
 
+#include "graph/shortest_paths.h"
 #include "surface/facet_normals.h"
 
 #include <Eigen/SparseCholesky>
@@ -12,7 +13,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace lsr {
@@ -119,34 +119,16 @@ std::vector<Index> free_parts(const EdgeGraph& g, const std::vector<char>& free,
   return part;
 }
 
-// Each free vertex's shortest path over the edges to a fixed vertex (Dijkstra from the rim).
+// Each free vertex's shortest path over the edges to a fixed vertex (0 at the fixed ones).
 template <int D>
 std::vector<double> path_to_rim(const LevelSetMesh<D>& s, const EdgeGraph& g, const std::vector<char>& free) {
-  std::vector<double> reach(free.size(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  std::vector<char> rim(free.size(), 0);
   for (std::size_t v = 0; v < free.size(); ++v) {
-    if (free[v]) continue;
-    reach[v] = 0.0;
-    for (std::size_t k = g.first[v]; k < g.first[v + 1]; ++k) {
-      if (free[std::size_t(g.next[k])]) {
-        queue.emplace(0.0, v);
-        break;
-      }
-    }
+    for (std::size_t k = g.first[v]; k < g.first[v + 1] && !free[v] && !rim[v]; ++k) rim[v] = free[std::size_t(g.next[k])];
   }
-  while (!queue.empty()) {
-    const auto [d, a] = queue.top();
-    queue.pop();
-    if (d > reach[a]) continue;
-    for (std::size_t k = g.first[a]; k < g.first[a + 1]; ++k) {
-      const auto w = std::size_t(g.next[k]);
-      const double dw = d + (s.vertices[w] - s.vertices[a]).norm();
-      if (free[w] && dw < reach[w]) {
-        reach[w] = dw;
-        queue.emplace(dw, w);
-      }
-    }
+  std::vector<double> reach = detail::shortest_paths(s.vertices, g.first, g.next, rim, free);
+  for (std::size_t v = 0; v < free.size(); ++v) {
+    if (!free[v]) reach[v] = 0.0;
   }
   return reach;
 }
