@@ -14,6 +14,7 @@
 #include "command_line.h"
 #include "compare_cases.h"
 #include "compare_methods.h"
+#include "mesh_measures.h"
 #include "geometry/nearest_point_index.h"
 #include "geometry/self_intersections.h"
 #include "surface/embedded_moves.h"
@@ -135,75 +136,6 @@ lsr::demos::CompareCase file_case(const std::string& path) {
   return c;
 }
 
-// PCL's marching cubes output a triangle soup whose copies of an edge point differ by rounding:
-// weld positions within 1e-6 of the diagonal so topology can be judged. lsrecon's meshes are
-// indexed and taken as written: where its surface has two sides on one sheet of data they may
-// lie closer than any tolerance meant for rounding.
-void weld(const pcl::PolygonMesh& mesh, double diagonal, lsr::Points<3>& vertices,
-          std::vector<std::array<lsr::Index, 3>>& triangles) {
-  lsr::Points<3> raw;
-  std::vector<std::array<lsr::Index, 3>> soup;
-  lsr::adapters::triangles_from_polygon_mesh(mesh, raw, soup);
-  // Each vertex joins the lowest-index vertex within the tolerance: deterministic, and unlike
-  // rounding to cells it never separates two copies that straddle a cell boundary.
-  const double tolerance = 1e-6 * diagonal;
-  std::vector<lsr::Index> remap(raw.size(), -1);
-  vertices.clear();
-  if (!raw.empty()) {
-    const lsr::NearestPointIndex<3> index(raw);
-    std::vector<lsr::Index> near;
-    for (std::size_t i = 0; i < raw.size(); ++i) {
-      if (remap[i] >= 0) continue;
-      remap[i] = lsr::Index(vertices.size());
-      vertices.push_back(raw[i]);
-      index.within(raw[i], tolerance, near);
-      for (lsr::Index j : near) {
-        if (remap[j] < 0) remap[j] = remap[i];
-      }
-    }
-  }
-  triangles.clear();
-  for (auto t : soup) {
-    for (auto& v : t) v = remap[v];
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
-  }
-}
-
-// The surface's area, and the share of it farther than 2 spacings (the median distance to
-// the 8th nearest point) from every point, by facet centroids: where the surface is a guess.
-struct SupportFigures {
-  double area = 0.0, far_share = 0.0;
-};
-
-SupportFigures support_figures(const lsr::Points<3>& vertices, const std::vector<std::array<lsr::Index, 3>>& triangles,
-                               const lsr::Points<3>& points) {
-  SupportFigures f;
-  if (triangles.empty() || points.size() < 9) return f;
-  const lsr::NearestPointIndex<3> data(points);
-  lsr::LargeVector<lsr::Index> knn;
-  data.query_k(points, 9, knn);  // the point itself first
-  std::vector<double> eighth(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) eighth[i] = (points[std::size_t(knn[9 * i + 8])] - points[i]).norm();
-  std::nth_element(eighth.begin(), eighth.begin() + long(eighth.size() / 2), eighth.end());
-  const double spacing = eighth[eighth.size() / 2];
-  lsr::Points<3> centroids;
-  std::vector<double> area;
-  for (const auto& t : triangles) {
-    const lsr::Vec<3>&a = vertices[std::size_t(t[0])], &b = vertices[std::size_t(t[1])], &c = vertices[std::size_t(t[2])];
-    centroids.push_back((a + b + c) / 3.0);
-    area.push_back(0.5 * (b - a).cross(c - a).norm());
-  }
-  std::vector<double> distance;
-  data.query(centroids, distance);
-  double far = 0.0;
-  for (std::size_t k = 0; k < area.size(); ++k) {
-    f.area += area[k];
-    if (distance[k] > 2.0 * spacing) far += area[k];
-  }
-  f.far_share = f.area > 0.0 ? far / f.area : 0.0;
-  return f;
-}
-
 int run_one(const Settings& s, const std::string& case_name, const std::string& method) {
   const lsr::demos::CompareCase c = s.input.empty()
                                         ? lsr::demos::make_case(case_name, s.points, s.variant, unsigned(s.seed),
@@ -223,7 +155,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
   if (p.indexed) {
     lsr::adapters::triangles_from_polygon_mesh(p.mesh, vertices, triangles);
   } else {
-    weld(p.mesh, c.diagonal, vertices, triangles);
+    lsr::demos::weld(p.mesh, c.diagonal, vertices, triangles);
   }
   const lsr::SurfaceTopology t = lsr::analyze_surface(vertices, triangles);
   // As saved (floats, below): the pairs of triangles that intersect, decided exactly.
@@ -249,7 +181,7 @@ int run_one(const Settings& s, const std::string& case_name, const std::string& 
     std::snprintf(text, sizeof text, format, v);
     return c.sdf ? std::string(text) : std::string("n/a");
   };
-  const SupportFigures support = support_figures(vertices, triangles, c.points);
+  const lsr::demos::SupportFigures support = lsr::demos::support_figures(vertices, triangles, c.points);
   std::printf("%s,%s,%zu,%.3f,%.0f,%s,%s,%s,%d,%d,%zu,%d,%s,%zu,%.6g,%.4f,%s\n", case_name.c_str(), method.c_str(),
               c.points.size(), seconds, memory, metric(d.chamfer / c.diagonal, "%.3e").c_str(),
               metric(d.hausdorff / c.diagonal, "%.3e").c_str(), metric(d.normal_consistency, "%.3f").c_str(),
