@@ -15,7 +15,6 @@
 #include "compare_cases.h"
 #include "compare_methods.h"
 #include "mesh_measures.h"
-#include "geometry/nearest_point_index.h"
 #include "geometry/self_intersections.h"
 #include "surface/embedded_moves.h"
 #include "lsrecon/adapters/pcl_mesh.h"
