@@ -134,7 +134,6 @@ TEST(OutwardNormals, AFlippedCapIsMadeConsistent) {
 // hole: the sign a start across the data lacks there, where two sheets may span the hole.
 TEST(OccupancyStart, NegativeExactlyInsideATorus) {
   Points<3> p, n;
-  std::vector<double> spacing;
   const int around = 160, along = 64;
   for (int i = 0; i < around; ++i) {
     for (int j = 0; j < along; ++j) {
@@ -143,19 +142,36 @@ TEST(OccupancyStart, NegativeExactlyInsideATorus) {
       const Vec<3> normal = std::cos(b) * radial + std::sin(b) * Vec<3>::UnitZ();
       p.push_back(radial + 0.4 * normal);
       n.push_back((i + j) % 2 == 0 ? normal : Vec<3>(-normal));
-      // The patch of the (a, b) lattice, 0.4 (1 + 0.4 cos b) da db, as the spacing that stands
-      // for it (sample_measure: pi s^2 / 6): w is then the midpoint rule of the exact integral.
-      const double patch = 0.4 * (1.0 + 0.4 * std::cos(b)) * (2.0 * kPi / around) * (2.0 * kPi / along);
-      spacing.push_back(std::sqrt(6.0 * patch / kPi));
     }
   }
   const Points<3> inside = {Vec<3>(1, 0, 0), Vec<3>(0, -1, 0), Vec<3>(-0.7, 0.7, 0.1)};
   const Points<3> outside = {Vec<3>(0, 0, 0), Vec<3>(0, 0, 0.3), Vec<3>(0.3, 0.2, -0.3), Vec<3>(2, 0, 0), Vec<3>(0, 0, 1)};
   Points<3> at = inside;
   at.insert(at.end(), outside.begin(), outside.end());
-  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, spacing, 1);
+  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, 1);
   for (std::size_t i = 0; i < inside.size(); ++i) EXPECT_NEAR(u[Eigen::Index(i)], -0.5, kTolerance) << at[i].transpose();
   for (std::size_t i = inside.size(); i < at.size(); ++i) EXPECT_NEAR(u[Eigen::Index(i)], 0.5, kTolerance) << at[i].transpose();
+}
+
+// A sphere sampled four times as densely above its equator as below (a thinned sample, or
+// overlapping views on one side): each sample stands for the area its own neighbourhood's
+// density gives, so w is 1 at the centre (-1/2 for the start), 0 outside. With one area for
+// all, the centre would read 4/5 or 2 of the sphere's area.
+TEST(OccupancyStart, AreasFollowTheSamplesDensity) {
+  Points<3> p, n, q, m;
+  sphere(16000, Vec<3>::Zero(), 0.0, p, n);
+  sphere(4000, Vec<3>::Zero(), -1.0, q, m);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    if (q[i].z() >= 0.0) continue;
+    p.push_back(q[i]);
+    n.push_back(-m[i]);
+  }
+  const Points<3> at = {Vec<3>::Zero(), Vec<3>(0.3, -0.2, -0.4), Vec<3>(0, 0, 2), Vec<3>(1.5, 0, -0.5)};
+  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, 1);
+  EXPECT_NEAR(u[0], -0.5, kTolerance);
+  EXPECT_NEAR(u[1], -0.5, kTolerance);
+  EXPECT_NEAR(u[2], 0.5, kTolerance);
+  EXPECT_NEAR(u[3], 0.5, kTolerance);
 }
 
 }  // namespace

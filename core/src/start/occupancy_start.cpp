@@ -7,6 +7,8 @@
 #include "start/winding_number.h"
 #include "thread_count.h"
 
+#include <cmath>
+
 namespace lsr::detail {
 
 template <int D>
@@ -61,16 +63,24 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
 
 template <int D>
 Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& spacing, int threads) {
+                                int threads) {
   const Points<D>& points = data.points();
-  constexpr int k = LocalSampling<D>::kNeighbours;
+  constexpr int k = LocalSampling<D>::kNeighbours, rank = LocalSampling<D>::kSpacingRank;
   LargeVector<Index> knn;
   data.query_k(points, k, knn, threads);
-  std::vector<double> area(points.size());
-  for (std::size_t p = 0; p < points.size(); ++p) area[p] = sample_measure<D>(spacing[p]);
+  // Each sample's area from the density of the sample summed (k - 1 others within the farthest
+  // of its k nearest), not from the cloud's spacing: where the mesh reads a thinned sample
+  // (mesh_resolution_sample.h) the spacing is the dense cloud's, and its areas would add up to
+  // a fraction of the surface (w about 1/2 inside a body). Its radius: the spacing of that density.
+  std::vector<double> area(points.size()), radius(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const double reach = (points[std::size_t(knn[p * std::size_t(k) + std::size_t(k - 1)])] - points[p]).norm();
+    area[p] = sample_measure<D>(reach, k - 1);
+    radius[p] = reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1));
+  }
   Points<D> outward = outward_normals(points, normals, area, knn, k);
-  make_consistent(points, outward, area, spacing, threads);
-  const WindingNumber<D> w(points, outward, area, spacing);
+  make_consistent(points, outward, area, radius, threads);
+  const WindingNumber<D> w(points, outward, area, radius);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(threads))
   for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(vertices.size()); ++v) u[v] = 0.5 - w.at(vertices[std::size_t(v)]);
@@ -81,7 +91,7 @@ template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const 
 template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int);
 template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&, int);
 template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&, int);
-template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
-template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, int);
+template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, int);
 
 }  // namespace lsr::detail

@@ -27,8 +27,8 @@ double WindingNumber<D>::term(const Vec<D>& dipole, const Vec<D>& at, double rad
 }
 
 template <int D>
-double sample_measure(double spacing) {
-  return D == 3 ? kPi * spacing * spacing / 6.0 : spacing;
+double sample_measure(double reach, int others) {
+  return (D == 3 ? kPi * reach * reach : 2.0 * reach) / others;
 }
 
 template <int D>
@@ -122,7 +122,7 @@ double WindingNumber<D>::at(const Vec<D>& x) const {
 
 template class WindingNumber<2>;
 template class WindingNumber<3>;
-template double sample_measure<2>(double);
-template double sample_measure<3>(double);
+template double sample_measure<2>(double, int);
+template double sample_measure<3>(double, int);
 
 }  // namespace lsr::detail

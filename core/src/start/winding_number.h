@@ -45,10 +45,11 @@ class WindingNumber {
   std::vector<double> radii_;
 };
 
-/// @brief The area (2D: length) a sample of local spacing s stands for: pi s^2 / 6 in 3D, as
-/// the spacing is the 6th neighbour's distance (local_sampling.h): 6 samples in a disc of radius
-/// s; s in 2D, the 2nd neighbour's distance of samples spaced s along a curve.
+/// @brief The area (2D: length) a sample stands for when `others` other samples lie within
+/// `reach` of it: pi reach^2 / others (2D: 2 reach / others), the density of its neighbourhood.
+/// With others = LocalSampling::kSpacingRank and the spacing as reach it is the patch the
+/// spacing rule assumes (6 samples in a disc of radius s; 2D: 2 along a segment s either side).
 template <int D>
-double sample_measure(double spacing);
+double sample_measure(double reach, int others);
 
 }  // namespace lsr::detail
