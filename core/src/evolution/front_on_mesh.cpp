@@ -49,7 +49,8 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   // 7. The settings, the attraction (spanned holes included) and u0.
   progress.update("setup", -1.0);
   const EvolutionSettings settings = resolve_evolution_settings(
-      o, scale, at_vertex.noise, point_scale, sampled.spacing, o.start.initial_front != InitialFront::tagged || custom_start);
+      o, scale, at_vertex.noise, point_scale, sampled.spacing,
+      (o.start.initial_front != InitialFront::tagged && o.start.initial_front != InitialFront::occupancy) || custom_start);
   r.time_step = settings.step.time_step;
   r.alpha = settings.step.alpha;
   r.curvature_weight = settings.step.curvature_weight;
@@ -67,6 +68,11 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   std::vector<char> near_hole = attract.over_hole.empty() ? std::vector<char>() : near_any(mesh.vertices, attract.over_hole, hole_radius, o.limits.threads);
   f.near_opening = start.near_opening;
   close_pocket(start, attract.d, near_hole, f.near_opening);
+  // From the occupancy start the drive takes its side from the occupancy: alpha d (1 - 2w) moves
+  // the front inwards where w < 1/2 and outwards where w > 1/2, at the data's attraction, and
+  // vanishes on the data (d = 0) and, where the data are silent (an unseen underside, a gap
+  // between scan lines), on the occupancy's boundary (w = 1/2), where the start put it.
+  if (start.occupancy.size() > 0) attract.d = attract.d.cwiseProduct(2.0 * start.occupancy);
   const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
   // 8. The time loop: the front evolves to the data; the best iterate is kept.
@@ -93,7 +99,7 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   typename FrontEvolution<D>::Restart restart;
   if (o.evolution.two_sided && !tested) {
     restart = [&] {
-      Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, o.limits.threads);
+      Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, point_scale, o.limits.threads);
       renormalize(mesh, f.neighbours, u, settings.schedule.band, o.limits.threads);
       return u;
     };

@@ -20,7 +20,7 @@ double max_front_distance(const LevelSetMesh<D>& front, const Eigen::VectorXd& d
   const auto at = [&](Index v) { return ignored.empty() || !ignored[std::size_t(v)] ? d[v] : 0.0; };
   double worst = 0.0;
   for (const EdgePoint& e : front.sources) {
-    worst = std::max(worst, ((1.0 - e.t) * at(e.a) + e.t * at(e.b)) / ((1.0 - e.t) * tolerance[e.a] + e.t * tolerance[e.b]));
+    worst = std::max(worst, std::abs((1.0 - e.t) * at(e.a) + e.t * at(e.b)) / ((1.0 - e.t) * tolerance[e.a] + e.t * tolerance[e.b]));
   }
   return worst;
 }

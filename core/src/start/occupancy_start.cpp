@@ -7,6 +7,7 @@
 #include "start/winding_number.h"
 #include "thread_count.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lsr::detail {
@@ -63,7 +64,7 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
 
 template <int D>
 Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
-                                int threads) {
+                                const std::vector<double>& scale, int threads) {
   const Points<D>& points = data.points();
   constexpr int k = LocalSampling<D>::kNeighbours, rank = LocalSampling<D>::kSpacingRank;
   LargeVector<Index> knn;
@@ -71,12 +72,13 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
   // Each sample's area from the density of the sample summed (k - 1 others within the farthest
   // of its k nearest), not from the cloud's spacing: where the mesh reads a thinned sample
   // (mesh_resolution_sample.h) the spacing is the dense cloud's, and its areas would add up to
-  // a fraction of the surface (w about 1/2 inside a body). Its radius: the spacing of that density.
+  // a fraction of the surface (w about 1/2 inside a body). Its radius: the spacing of that
+  // density, or the point's scale where larger (noise: w smooth across the band the data fill).
   std::vector<double> area(points.size()), radius(points.size());
   for (std::size_t p = 0; p < points.size(); ++p) {
     const double reach = (points[std::size_t(knn[p * std::size_t(k) + std::size_t(k - 1)])] - points[p]).norm();
     area[p] = sample_measure<D>(reach, k - 1);
-    radius[p] = reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1));
+    radius[p] = std::max(reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1)), scale[p]);
   }
   Points<D> outward = outward_normals(points, normals, area, knn, k);
   make_consistent(points, outward, area, radius, threads);
@@ -91,7 +93,7 @@ template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const 
 template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int);
 template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&, int);
 template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&, int);
-template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, int);
-template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, int);
+template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
 
 }  // namespace lsr::detail

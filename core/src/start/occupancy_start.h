@@ -37,12 +37,12 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
 /// their `normals` turned outward_normals and make_consistent along the graph of the neighbourhoods the normals
 /// were fitted on (LocalSampling::kNeighbours), each sample standing for the patch its
 /// neighbourhood's density gives (sample_measure of the k nearest) and smoothed over the spacing
-/// of that density. Negative inside; the zero
+/// of that density or its `scale` (local_scales: 1.5 sigma where the noise is larger), the larger. Negative inside; the zero
 /// level set passes through the samples and, across a gap in them, where the data subtend half the directions
 /// (the disc spanning a hole's rim). Far from the data it is 1/2 outside and -1/2 inside, so
 /// a sheet the front left across a gap of the data (a membrane over a torus's hole) is gone.
 template <int D>
 Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
-                                int threads);
+                                const std::vector<double>& scale, int threads);
 
 }  // namespace lsr::detail

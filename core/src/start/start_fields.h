@@ -75,6 +75,7 @@ struct StartField {
   Index open_side_points = 0;      ///< data points the flood reached from both sides
   int sealed_cavities = 0;         ///< see ReconstructionResult::sealed_cavities
   bool tagged = false;             ///< the tagged start (else a circle / sphere or the caller's)
+  Eigen::VectorXd occupancy;       ///< #V: 1/2 - w of the occupancy start (occupancy_start.h); empty without
 };
 
 /// @brief u0: the caller's `custom_start` (input coordinates; `box` maps the unit box to them)

@@ -124,5 +124,40 @@ TEST(OpenSideClosure, SmallHolesInClosedDataAreLeftToTheDiscs) {
   EXPECT_EQ(t.genus, std::vector<int>{0});
 }
 
+ReconstructionOptions occupancy_start_options() {
+  ReconstructionOptions o;
+  o.start.initial_front = InitialFront::occupancy;
+  return o;
+}
+
+// From the occupancy start the dome closes where its winding number is 1/2, on the disc that
+// spans its rim (WindingNumber.AHalfOnTheDiscSpanningADomesRim), and the drive alpha d (1 - 2w)
+// keeps the front there where no data attract it: one body, more than half the half ball
+// (a shell around the samples holds a tenth of it) and less than the whole ball.
+TEST(OccupancyStart, ADomeClosesAtItsRim) {
+  const ReconstructionResult<3> r = reconstruct<3>(sphere_points(12000, 0.0), occupancy_start_options());
+  const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
+  EXPECT_TRUE(t.watertight);
+  EXPECT_EQ(t.genus, std::vector<int>{0});
+  EXPECT_GT(enclosed_volume(r.surface), 0.5 * (2.0 / 3.0) * kPi);
+  EXPECT_LT(enclosed_volume(r.surface), (4.0 / 3.0) * kPi);
+}
+
+// 100,000 points under a mesh of resolution 32: the stages after the sampling read a sample
+// thinned to the mesh's size (mesh_resolution_sample.h), 1 point in about 40. Its winding
+// number weighs each kept point by the density of the kept ones: one sphere, within two cells
+// h = 1/32 of the unit box (radius 1 is 1/2.2 of it with the box's margin, about) in radius.
+TEST(OccupancyStart, AThinnedSampleIsOneBody) {
+  ReconstructionOptions o = occupancy_start_options();
+  o.mesh.max_resolution = 32;
+  const ReconstructionResult<3> r = reconstruct<3>(sphere_points(100000), o);
+  const SurfaceTopology t = analyze_surface(r.surface.vertices, r.surface.facets);
+  EXPECT_TRUE(t.watertight);
+  EXPECT_EQ(t.genus, std::vector<int>{0});
+  const double h = 2.2 / 32;
+  EXPECT_GT(enclosed_volume(r.surface), (4.0 / 3.0) * kPi * std::pow(1.0 - 2.0 * h, 3));
+  EXPECT_LT(enclosed_volume(r.surface), (4.0 / 3.0) * kPi * std::pow(1.0 + 2.0 * h, 3));
+}
+
 }  // namespace
 }  // namespace lsr::detail
