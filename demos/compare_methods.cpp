@@ -22,8 +22,8 @@
 
 namespace lsr::demos {
 
-const std::vector<std::string> kMethods = {"lsrecon",  "lsrecon-anisotropic", "lsrecon-tiles", "poisson8", "poisson8-mt",
-                                          "poisson9", "poisson8-lsrecon",    "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
+const std::vector<std::string> kMethods = {"lsrecon",  "lsrecon-anisotropic", "lsrecon-tiles", "lsrecon-occupancy", "poisson8",
+                                          "poisson8-mt", "poisson9", "poisson8-lsrecon", "poisson8-true", "mc-hoppe", "mc-rbf", "gp3"};
 
 namespace {
 
@@ -115,6 +115,7 @@ Produced run_method(const std::string& method, const CompareCase& c, const Lsrec
     options.mesh.max_resolution = s.max_resolution;
     options.limits.solve_tiles = method == "lsrecon-tiles" ? std::max(2, s.solve_tiles) : s.solve_tiles;
     options.mesh.anisotropic = method == "lsrecon-anisotropic";
+    if (method == "lsrecon-occupancy") options.start.initial_front = lsr::InitialFront::occupancy;
     ls.setOptions(options);
     ls.reconstruct(out.mesh);
     out.note = std::string(ls.getStatus().converged ? "converged" : "not converged") + " in " +

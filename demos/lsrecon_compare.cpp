@@ -258,14 +258,16 @@ void write_ratios(std::ostream& md, const std::vector<std::string>& rows) {
     if (!seconds.empty() && !memory.empty()) figures[name][method] = {std::atof(seconds.c_str()), std::atof(memory.c_str()), c, a};
   }
   // The area against Poisson given the true (or the scanner's) normals: flaps and fins add area.
-  bool area_header = false;
-  for (const auto& [name, methods] : figures) {
-    if (!methods.count("lsrecon") || !methods.count("poisson8-true") || !(methods.at("poisson8-true").area > 0.0)) continue;
-    if (!area_header) md << "\n| case | area lsrecon / poisson8-true |\n|---|--:|\n";
-    area_header = true;
-    char line[96];
-    std::snprintf(line, sizeof line, "| %s | %.3f |\n", name.c_str(), methods.at("lsrecon").area / methods.at("poisson8-true").area);
-    md << line;
+  for (const std::string ours : {"lsrecon", "lsrecon-occupancy"}) {
+    bool area_header = false;
+    for (const auto& [name, methods] : figures) {
+      if (!methods.count(ours) || !methods.count("poisson8-true") || !(methods.at("poisson8-true").area > 0.0)) continue;
+      if (!area_header) md << "\n| case | area " << ours << " / poisson8-true |\n|---|--:|\n";
+      area_header = true;
+      char line[96];
+      std::snprintf(line, sizeof line, "| %s | %.3f |\n", name.c_str(), methods.at(ours).area / methods.at("poisson8-true").area);
+      md << line;
+    }
   }
   for (const std::string compared : {"poisson8", "poisson8-mt", "lsrecon-tiles"}) {
     const bool tiles = compared == "lsrecon-tiles";
