@@ -125,7 +125,11 @@ TEST(OutwardNormals, AFlippedCapIsMadeConsistent) {
     if (p[i].z() > 0.5) out[i] = -out[i];
   }
   const double area = 4.0 * kPi / 4000;
-  make_consistent<3>(p, out, std::vector<double>(p.size(), area), std::vector<double>(p.size(), std::sqrt(6.0 * area / kPi)), 1);
+  const NearestPointIndex<3> index(p);
+  LargeVector<Index> knn;
+  index.query_k(p, kNeighbours, knn);
+  make_consistent<3>(p, out, std::vector<double>(p.size(), area), std::vector<double>(p.size(), std::sqrt(6.0 * area / kPi)), knn,
+                     kNeighbours, 1);
   for (std::size_t i = 0; i < p.size(); ++i) ASSERT_GT(out[i].dot(n[i]), 0.0) << i;
 }
 

@@ -43,21 +43,33 @@ constexpr int kConsistencyPasses = 32;
 
 template <int D>
 void make_consistent(const Points<D>& points, Points<D>& outward, const std::vector<double>& areas,
-                     const std::vector<double>& radii, int threads) {
-  std::vector<char> flip(points.size());
+                     const std::vector<double>& radii, const LargeVector<Index>& knn, int k, int threads) {
+  const std::size_t n = points.size();
+  std::vector<char> flip(n), tested(n, 1);
+  bool all_tested = true;
   for (int pass = 0; pass < kConsistencyPasses; ++pass) {
     const WindingNumber<D> w(points, outward, areas, radii);
     std::size_t flips = 0;
 #pragma omp parallel for schedule(dynamic, 256) reduction(+ : flips) num_threads(thread_count(threads))
-    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(points.size()); ++i) {
+    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i) {
       const auto p = std::size_t(i);
+      flip[p] = 0;
+      if (!tested[p]) continue;
       const Vec<D> probe = 2.0 * radii[p] * outward[p];
       flip[p] = w.at(points[p] + probe) > w.at(points[p] - probe);
       flips += std::size_t(flip[p]);
     }
-    if (flips == 0) return;
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      if (flip[p]) outward[p] = -outward[p];
+    if (flips == 0 && all_tested) return;
+    std::fill(tested.begin(), tested.end(), char(flips == 0));
+    all_tested = flips == 0;
+    for (std::size_t p = 0; p < n; ++p) {
+      if (!flip[p]) continue;
+      outward[p] = -outward[p];
+      for (int j = 0; j < k; ++j) tested[std::size_t(knn[p * std::size_t(k) + std::size_t(j)])] = 1;
+    }
+    // The graph made symmetric: p is tested again when a point among whose k nearest it is flipped.
+    for (std::size_t p = 0; p < n && !all_tested; ++p) {
+      for (int j = 0; j < k && !tested[p]; ++j) tested[p] = flip[std::size_t(knn[p * std::size_t(k) + std::size_t(j)])];
     }
   }
 }
@@ -81,7 +93,7 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
     radius[p] = std::max(reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1)), scale[p]);
   }
   Points<D> outward = outward_normals(points, normals, area, knn, k);
-  make_consistent(points, outward, area, radius, threads);
+  make_consistent(points, outward, area, radius, knn, k, threads);
   const WindingNumber<D> w(points, outward, area, radius);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(thread_count(threads))
@@ -91,8 +103,10 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
 
 template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int);
 template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int);
-template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&, int);
-template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&, int);
+template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&,
+                                 const LargeVector<Index>&, int, int);
+template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&,
+                                 const LargeVector<Index>&, int, int);
 template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
 template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
 

@@ -28,10 +28,12 @@ Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, con
 /// over `radii`: each pass flips the normals along which w is larger at p + 2 r_p n_p than at
 /// p - 2 r_p n_p (beyond the smoothing, where a sheet's own jump of w is complete), until no
 /// flip or kConsistencyPasses. Where a wrong turn of the spanning tree flipped a region, the
-/// passes wear it down from its border inwards.
+/// passes wear it down from its border inwards. A flip changes w near it: after a pass only the
+/// flipped points and their neighbours in `knn` (k per point) are tested again, and when none
+/// flips, every point once more (a flip's far field may tip a point elsewhere).
 template <int D>
 void make_consistent(const Points<D>& points, Points<D>& outward, const std::vector<double>& areas,
-                     const std::vector<double>& radii, int threads);
+                     const std::vector<double>& radii, const LargeVector<Index>& knn, int k, int threads);
 
 /// @brief 1/2 - w at each vertex, w the generalised winding number of the `data` points with
 /// their `normals` turned outward_normals and make_consistent along the graph of the neighbourhoods the normals
