@@ -152,7 +152,7 @@ TEST(OccupancyStart, NegativeExactlyInsideATorus) {
   const Points<3> outside = {Vec<3>(0, 0, 0), Vec<3>(0, 0, 0.3), Vec<3>(0.3, 0.2, -0.3), Vec<3>(2, 0, 0), Vec<3>(0, 0, 1)};
   Points<3> at = inside;
   at.insert(at.end(), outside.begin(), outside.end());
-  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, std::vector<double>(p.size(), 0.0), 1);
+  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, {}, std::vector<double>(p.size(), 0.0), 1);
   for (std::size_t i = 0; i < inside.size(); ++i) EXPECT_NEAR(u[Eigen::Index(i)], -0.5, kTolerance) << at[i].transpose();
   for (std::size_t i = inside.size(); i < at.size(); ++i) EXPECT_NEAR(u[Eigen::Index(i)], 0.5, kTolerance) << at[i].transpose();
 }
@@ -171,7 +171,7 @@ TEST(OccupancyStart, AreasFollowTheSamplesDensity) {
     n.push_back(-m[i]);
   }
   const Points<3> at = {Vec<3>::Zero(), Vec<3>(0.3, -0.2, -0.4), Vec<3>(0, 0, 2), Vec<3>(1.5, 0, -0.5)};
-  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, std::vector<double>(p.size(), 0.0), 1);
+  const Eigen::VectorXd u = occupancy_start<3>(at, NearestPointIndex<3>(p), n, {}, std::vector<double>(p.size(), 0.0), 1);
   EXPECT_NEAR(u[0], -0.5, kTolerance);
   EXPECT_NEAR(u[1], -0.5, kTolerance);
   EXPECT_NEAR(u[2], 0.5, kTolerance);

@@ -99,7 +99,7 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   typename FrontEvolution<D>::Restart restart;
   if (o.evolution.two_sided && !tested) {
     restart = [&] {
-      Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, point_scale, o.limits.threads);
+      Eigen::VectorXd u = occupancy_start(mesh.vertices, data, sampling.normals, sampling.noise, point_scale, o.limits.threads);
       renormalize(mesh, f.neighbours, u, settings.schedule.band, o.limits.threads);
       return u;
     };

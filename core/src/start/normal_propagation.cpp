@@ -2,6 +2,7 @@
 /// @file normal_propagation.cpp
 #include "start/normal_propagation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <queue>
@@ -10,12 +11,22 @@
 namespace lsr::detail {
 
 template <int D>
-PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, int k) {
+PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, int k,
+                                  const std::vector<double>& noise) {
   const std::size_t n = normals.size();
   // n_q against n_p reflected in the plane bisecting the chord e (unit, p to q): the normals of
   // a sphere (circle) are each other's mirror images there, and on a plane it is n_p . n_q.
+  // The chord's offset along n_p within two deviations of the difference of two noisy offsets
+  // is noise, not a second sheet: it is taken off (within a band the noise fills, neighbours
+  // across it would otherwise read as sheets facing each other).
   const auto agreement = [&](std::size_t p, std::size_t q) {
-    const Vec<D> e = (points[q] - points[p]).normalized();
+    Vec<D> e = points[q] - points[p];
+    if (!noise.empty()) {
+      const double h = e.dot(normals[p]), spread = 2.0 * std::hypot(noise[p], noise[q]);
+      e -= (h - std::copysign(std::max(std::abs(h) - spread, 0.0), h)) * normals[p];
+    }
+    if (e.squaredNorm() == 0.0) return normals[p].dot(normals[q]);
+    e.normalize();
     return normals[p].dot(normals[q]) - 2.0 * normals[p].dot(e) * normals[q].dot(e);
   };
   // The graph made symmetric: a point is joined to its k nearest and to those that list it.
@@ -71,7 +82,9 @@ PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& norm
   return out;
 }
 
-template PropagatedSenses propagate_senses<2>(const Points<2>&, const Points<2>&, const LargeVector<Index>&, int);
-template PropagatedSenses propagate_senses<3>(const Points<3>&, const Points<3>&, const LargeVector<Index>&, int);
+template PropagatedSenses propagate_senses<2>(const Points<2>&, const Points<2>&, const LargeVector<Index>&, int,
+                                              const std::vector<double>&);
+template PropagatedSenses propagate_senses<3>(const Points<3>&, const Points<3>&, const LargeVector<Index>&, int,
+                                              const std::vector<double>&);
 
 }  // namespace lsr::detail

@@ -28,7 +28,9 @@ struct PropagatedSenses {
 
 /// @param points the points, `normals` their unit normals, `knn` each point's k nearest (row-major, k per point; a point
 /// may list itself, which is skipped)
+/// @param noise each point's noise deviation (LocalSampling::noise), or empty: none
 template <int D>
-PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, int k);
+PropagatedSenses propagate_senses(const Points<D>& points, const Points<D>& normals, const LargeVector<Index>& knn, int k,
+                                  const std::vector<double>& noise = {});
 
 }  // namespace lsr::detail

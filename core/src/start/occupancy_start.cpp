@@ -14,8 +14,8 @@ namespace lsr::detail {
 
 template <int D>
 Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
-                          const LargeVector<Index>& knn, int k) {
-  const PropagatedSenses tree = propagate_senses<D>(points, normals, knn, k);
+                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise) {
+  const PropagatedSenses tree = propagate_senses<D>(points, normals, knn, k, noise);
   const auto parts = std::size_t(tree.parts);
   std::vector<Vec<D>> centroid(parts, Vec<D>::Zero());
   std::vector<double> count(parts, 0.0), flux(parts, 0.0);
@@ -76,7 +76,7 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
 
 template <int D>
 Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& scale, int threads) {
+                                const std::vector<double>& noise, const std::vector<double>& scale, int threads) {
   const Points<D>& points = data.points();
   constexpr int k = LocalSampling<D>::kNeighbours, rank = LocalSampling<D>::kSpacingRank;
   LargeVector<Index> knn;
@@ -92,7 +92,7 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
     area[p] = sample_measure<D>(reach, k - 1);
     radius[p] = std::max(reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1)), scale[p]);
   }
-  Points<D> outward = outward_normals(points, normals, area, knn, k);
+  Points<D> outward = outward_normals(points, normals, area, knn, k, noise);
   make_consistent(points, outward, area, radius, knn, k, threads);
   const WindingNumber<D> w(points, outward, area, radius);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
@@ -101,13 +101,17 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
   return u;
 }
 
-template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int);
-template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int);
+template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int,
+                                      const std::vector<double>&);
+template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int,
+                                      const std::vector<double>&);
 template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&,
                                  const LargeVector<Index>&, int, int);
 template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&,
                                  const LargeVector<Index>&, int, int);
-template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&, int);
-template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<2>(const Points<2>&, const NearestPointIndex<2>&, const Points<2>&, const std::vector<double>&,
+                                            const std::vector<double>&, int);
+template Eigen::VectorXd occupancy_start<3>(const Points<3>&, const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&,
+                                            const std::vector<double>&, int);
 
 }  // namespace lsr::detail

@@ -18,10 +18,10 @@ namespace lsr::detail {
 /// `knn` (propagate_senses), and each of its parts takes the overall sense in which the flux of
 /// x - c through it, c its centroid, is positive. By the divergence theorem that flux is D times
 /// the enclosed volume for a closed surface, whatever c; for an open sheet it is the cone's over
-/// c, positive on the convex side.
+/// c, positive on the convex side. `noise`: each point's deviation (propagate_senses), or empty.
 template <int D>
 Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
-                          const LargeVector<Index>& knn, int k);
+                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise = {});
 
 /// @brief `outward` (unit normals oriented outwards, as outward_normals gives them) made
 /// consistent with the winding number w they generate, samples weighing `areas` and smoothed
@@ -45,6 +45,6 @@ void make_consistent(const Points<D>& points, Points<D>& outward, const std::vec
 /// a sheet the front left across a gap of the data (a membrane over a torus's hole) is gone.
 template <int D>
 Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointIndex<D>& data, const Points<D>& normals,
-                                const std::vector<double>& scale, int threads);
+                                const std::vector<double>& noise, const std::vector<double>& scale, int threads);
 
 }  // namespace lsr::detail
