@@ -114,6 +114,35 @@ TEST(OutwardNormals, AnOpenDomeTurnsToItsConvexSide) {
   for (std::size_t i = 0; i < p.size(); ++i) ASSERT_GT(out[i].dot(n[i]), 0.0) << i;
 }
 
+// Three nested spheres (radii 1, 0.6, 0.3: three parts of the k-nearest graph), normals flipped
+// at random: the flux turns each outwards, and with the samples' radii the even-odd rule turns
+// the middle one, inside one other, inwards: it bounds the cavity of a hollow ball whose core
+// (inside two) is solid again.
+TEST(OutwardNormals, NestedSpheresAlternate) {
+  Points<3> p, n;
+  for (const double r : {1.0, 0.6, 0.3}) {
+    Points<3> q, m;
+    sphere(int(4000 * r * r), Vec<3>::Zero(), -1.0, q, m);
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      p.push_back(r * q[i]);
+      n.push_back(i % 3 == 0 ? Vec<3>(-m[i]) : m[i]);
+    }
+  }
+  const NearestPointIndex<3> index(p);
+  LargeVector<Index> knn;
+  index.query_k(p, kNeighbours, knn);
+  std::vector<double> area(p.size()), radius(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    area[i] = 4.0 * kPi / 4000.0;  // every sphere was sampled at the same density
+    radius[i] = std::sqrt(6.0 * area[i] / kPi);
+  }
+  const Points<3> out = outward_normals<3>(p, n, area, knn, kNeighbours, {}, radius);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = p[i].norm(), facing = out[i].dot(p[i]) / r;
+    ASSERT_GT(r > 0.45 && r < 0.75 ? -facing : facing, 0.0) << i << " at radius " << r;
+  }
+}
+
 // A wrong turn of the spanning tree flips a whole region: here the cap z > 0.5 of a sphere
 // (a quarter of it). Probed two spacings either side, the normals at the cap's border point
 // towards larger w, flip, and the region wears down pass by pass until every normal points out.

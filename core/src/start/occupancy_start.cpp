@@ -14,7 +14,7 @@ namespace lsr::detail {
 
 template <int D>
 Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
-                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise) {
+                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise, const std::vector<double>& radii) {
   const PropagatedSenses tree = propagate_senses<D>(points, normals, knn, k, noise);
   const auto parts = std::size_t(tree.parts);
   std::vector<Vec<D>> centroid(parts, Vec<D>::Zero());
@@ -31,6 +31,23 @@ Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, con
   Points<D> out(normals.size());
   for (std::size_t p = 0; p < normals.size(); ++p) {
     out[p] = (flux[std::size_t(tree.part[p])] >= 0.0 ? 1.0 : -1.0) * tree.sense[p] * normals[p];
+  }
+  if (parts < 2 || radii.empty()) return out;
+  // Nested parts alternate: a part inside an odd number of others bounds a cavity and faces
+  // inwards (even-odd rule). With every part turned outwards, w just outside a part's samples
+  // (2 radii out, past its own jump) counts the parts around it; its median over the part's
+  // samples, rounded, is the part's depth.
+  const WindingNumber<D> w(points, out, areas, radii);
+  std::vector<std::vector<double>> around(parts);
+  for (std::size_t p = 0; p < points.size(); ++p) around[std::size_t(tree.part[p])].push_back(w.at(points[p] + 2.0 * radii[p] * out[p]));
+  std::vector<char> cavity(parts);
+  for (std::size_t q = 0; q < parts; ++q) {
+    auto middle = around[q].begin() + std::ptrdiff_t(around[q].size() / 2);
+    std::nth_element(around[q].begin(), middle, around[q].end());
+    cavity[q] = std::lround(*middle) % 2 != 0;
+  }
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (cavity[std::size_t(tree.part[p])]) out[p] = -out[p];
   }
   return out;
 }
@@ -92,7 +109,7 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
     area[p] = sample_measure<D>(reach, k - 1);
     radius[p] = std::max(reach * std::pow(double(rank) / (k - 1), 1.0 / (D - 1)), scale[p]);
   }
-  Points<D> outward = outward_normals(points, normals, area, knn, k, noise);
+  Points<D> outward = outward_normals(points, normals, area, knn, k, noise, radius);
   make_consistent(points, outward, area, radius, knn, k, threads);
   const WindingNumber<D> w(points, outward, area, radius);
   Eigen::VectorXd u(Eigen::Index(vertices.size()));
@@ -102,9 +119,9 @@ Eigen::VectorXd occupancy_start(const Points<D>& vertices, const NearestPointInd
 }
 
 template Points<2> outward_normals<2>(const Points<2>&, const Points<2>&, const std::vector<double>&, const LargeVector<Index>&, int,
-                                      const std::vector<double>&);
+                                      const std::vector<double>&, const std::vector<double>&);
 template Points<3> outward_normals<3>(const Points<3>&, const Points<3>&, const std::vector<double>&, const LargeVector<Index>&, int,
-                                      const std::vector<double>&);
+                                      const std::vector<double>&, const std::vector<double>&);
 template void make_consistent<2>(const Points<2>&, Points<2>&, const std::vector<double>&, const std::vector<double>&,
                                  const LargeVector<Index>&, int, int);
 template void make_consistent<3>(const Points<3>&, Points<3>&, const std::vector<double>&, const std::vector<double>&,

@@ -19,9 +19,12 @@ namespace lsr::detail {
 /// x - c through it, c its centroid, is positive. By the divergence theorem that flux is D times
 /// the enclosed volume for a closed surface, whatever c; for an open sheet it is the cone's over
 /// c, positive on the convex side. `noise`: each point's deviation (propagate_senses), or empty.
+/// Given the samples' `radii` (WindingNumber), a part inside an odd number of others then
+/// faces inwards: it bounds a cavity (the inner sphere of a hollow ball).
 template <int D>
 Points<D> outward_normals(const Points<D>& points, const Points<D>& normals, const std::vector<double>& areas,
-                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise = {});
+                          const LargeVector<Index>& knn, int k, const std::vector<double>& noise = {},
+                          const std::vector<double>& radii = {});
 
 /// @brief `outward` (unit normals oriented outwards, as outward_normals gives them) made
 /// consistent with the winding number w they generate, samples weighing `areas` and smoothed
