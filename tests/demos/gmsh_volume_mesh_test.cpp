@@ -16,7 +16,6 @@
 #include <fstream>
 #include <map>
 #include <utility>
-#include <regex>
 #include <sstream>
 
 namespace {
@@ -47,12 +46,32 @@ class GmshReads : public Cli {
     GmshView v;
     v.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     const std::string text = read("gmsh.txt");
-    std::smatch m;
-    if (std::regex_search(text, m, std::regex(R"(Info\s*:\s*(\d+) nodes)"))) v.nodes = std::stol(m[1]);
-    if (std::regex_search(text, m, std::regex(R"(Info\s*:\s*(\d+) elements)"))) v.elements = std::stol(m[1]);
-    if (std::regex_search(text, m, std::regex(R"(minJ\s*=\s*([-+0-9.eE]+),\s*([-+0-9.eE]+),)"))) {
-      v.min_jacobian = std::stod(m[1]);
-      v.mean_jacobian = std::stod(m[2]);
+    // The first "Info : N nodes", "Info : N elements" and "minJ = a, b," of the log. Read by
+    // hand: std::regex under GCC 12's -fsanitize builds warns inside libstdc++.
+    std::istringstream log_lines(text);
+    bool jacobians = false;
+    for (std::string line; std::getline(log_lines, line);) {
+      const std::size_t info = line.find("Info"), colon = line.find(':'), min_j = line.find("minJ");
+      if (info != std::string::npos && colon != std::string::npos && colon > info) {
+        std::istringstream rest(line.substr(colon + 1));
+        long count = -1;
+        std::string what;
+        if (rest >> count >> what) {
+          if (what == "nodes" && v.nodes < 0) v.nodes = count;
+          if (what == "elements" && v.elements < 0) v.elements = count;
+        }
+      }
+      const std::size_t equals = min_j == std::string::npos ? std::string::npos : line.find('=', min_j);
+      if (equals != std::string::npos && !jacobians) {
+        std::istringstream rest(line.substr(equals + 1));
+        double low = 0.0, mean = 0.0;
+        char comma = 0;
+        if (rest >> low >> comma >> mean && comma == ',') {
+          v.min_jacobian = low;
+          v.mean_jacobian = mean;
+          jacobians = true;
+        }
+      }
     }
     // Gmsh 2.2 elements: id type tag-count physical elementary nodes...
     std::ifstream in(saved);
