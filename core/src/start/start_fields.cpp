@@ -160,7 +160,9 @@ StartField<D> start_field(const SimplexMesh<D>& mesh, const VertexNeighbours& ne
     if (D == 3 && s.tagged && !has_rims) u += o.start.start_offset * scale;
     if (!s.tagged) u = initial_field(mesh, data, InitialFront::enclosing, h_min);
   } else if (o.start.initial_front == InitialFront::occupancy) {
-    s.occupancy = occupancy_start(mesh.vertices, data, sampling.normals, sampling.noise, open->point_scale, o.limits.threads);
+    // The points' scales raised to the mesh (OpenSideInputs) when given; the spacing is a lower bound.
+    const std::vector<double>& point_scale = open ? open->point_scale : sampling.spacing;
+    s.occupancy = occupancy_start(mesh.vertices, data, sampling.normals, sampling.noise, point_scale, o.limits.threads);
     u = s.occupancy;
     renormalize(mesh, neighbours, u, band, o.limits.threads);
   } else {
