@@ -65,8 +65,9 @@ Points<D> surface_on_one_mesh(SampledData<D>& sampled, const ReconstructionOptio
     if (!front.best_is_distance) renormalize(mesh, front.neighbours, best, front.band, o.limits.threads);
     front.ops = P1Operators<D>();  // done with G: the fit's index and blends reuse its memory (the peak)
     const QuadricImplicit<D> fit = fit_quadrics(data, normals, point_scale, o.limits.threads, progress);
-    Points<D> extracted = attach_fit(r, mesh, front.neighbours, fit, best, scale, at_vertex.distance, o.sampling.gap_factor, front.over_hole,
-                                     front.near_opening, data, normals, o.output.volume_mesh, o.limits.threads);
+    const FrontToFit<D> to_fit{mesh, front.neighbours, best, scale, at_vertex.distance, front.over_hole, front.near_opening,
+                               data, normals, o.sampling.gap_factor, o.limits.threads};
+    Points<D> extracted = attach_fit(r, to_fit, fit, o.output.volume_mesh);
     if (anisotropic && !o.output.volume_mesh) refine_onto_fit(r, fit, scale, at_vertex.distance, extracted, o.limits.threads);
     clock.end("fit");
     return extracted;

@@ -11,34 +11,28 @@
 
 namespace lsr::detail {
 
+namespace {
+
+// The vertices within band_factor local scales of the front (in `fitted`, all when empty).
 template <int D>
-FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const QuadricImplicit<D>& fit,
-                         const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
-                         double trust_factor, const std::vector<char>& over_hole, const std::vector<char>& near_opening,
-                         const NearestPointIndex<D>& data, const Points<D>& normals, int threads, const std::vector<char>& fitted) {
+struct Band {
+  Points<D> points;
+  std::vector<Index> vertices;
+  std::vector<double> fit;  ///< F at points
+};
+
+// F in the band where it is trusted, u elsewhere, into values (and fit_share near an opening).
+// Returns, per band slot, whether F cuts a bridge between facing sheets there.
+template <int D>
+std::vector<char> blend_in_band(const FrontToFit<D>& front, const Band<D>& band, std::vector<double>& values,
+                                std::vector<double>& fit_share) {
   // kHandover: where unsupported solid starts going to the front (below).
-  constexpr double band_factor = 3.0, kHandover = 1.0;
-  const auto is_over_hole = [&](std::size_t v) { return !over_hole.empty() && over_hole[v]; };
-  FittedField f{std::vector<double>(u.data(), u.data() + u.size()), {}};
-  std::vector<double>& values = f.values;
-  std::vector<double>& fit_share = f.fit_share;
-  Points<D> band;
-  std::vector<Index> band_vertices;
-  for (Eigen::Index v = 0; v < u.size(); ++v) {
-    if (std::abs(u[v]) < band_factor * scale[v] && (fitted.empty() || fitted[std::size_t(v)])) {
-      band.push_back(mesh.vertices[v]);
-      band_vertices.push_back(Index(v));
-    }
-  }
-  std::vector<double> fv;
-  fit.evaluate(band, fv, nullptr, threads);
-  // Near a sealed opening, the share of F in values: the output is projected onto F only that
-  // far (below), as F extrapolates where the front took over (projected in full, a front's cap
-  // over an open end turns facets inside out). Elsewhere in full: F is the accurate surface.
-  if (!near_opening.empty()) {
-    fit_share.resize(values.size());
-    for (std::size_t v = 0; v < values.size(); ++v) fit_share[v] = near_opening[v] ? 0.0 : 1.0;
-  }
+  constexpr double kHandover = 1.0;
+  const Eigen::VectorXd &u = front.u, &scale = front.scale, &distance = front.distance;
+  const std::vector<char>& near_opening = front.near_opening;
+  const double trust_factor = front.trust_factor;
+  const std::vector<double>& fv = band.fit;
+  const std::vector<Index>& band_vertices = band.vertices;
   auto limit_share = [&](Index v, double share) {
     if (!fit_share.empty() && near_opening[std::size_t(v)]) fit_share[std::size_t(v)] *= share;
   };
@@ -49,18 +43,18 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
   std::vector<std::size_t> disputed;  // band slots where the fit says outside, inside the front
   Points<D> queries;
   std::vector<double> query_distance, query_scale;
-  for (std::size_t k = 0; k < band.size(); ++k) {
+  for (std::size_t k = 0; k < band_vertices.size(); ++k) {
     const Index v = band_vertices[k];
     if (!(u[v] < 0.0 && fv[k] >= 0.0)) continue;
     disputed.push_back(k);
-    queries.push_back(band[k]);
+    queries.push_back(band.points[k]);
     query_distance.push_back(distance[v]);
     query_scale.push_back(scale[v]);
   }
-  const std::vector<char> in_gap = between_facing_sheets(data, normals, queries, query_distance, query_scale, threads);
-  std::vector<char> cuts_bridge(band.size(), 0);
+  const std::vector<char> in_gap = between_facing_sheets(front.data, front.normals, queries, query_distance, query_scale, front.threads);
+  std::vector<char> cuts_bridge(band_vertices.size(), 0);
   for (std::size_t i = 0; i < disputed.size(); ++i) cuts_bridge[disputed[i]] = in_gap[i];
-  for (std::size_t k = 0; k < band.size(); ++k) {
+  for (std::size_t k = 0; k < band_vertices.size(); ++k) {
     const Index v = band_vertices[k];
     const bool trusted = (fv[k] < 0.0) == (u[v] < 0.0) || std::abs(u[v]) < trust_factor * scale[v] || cuts_bridge[k];
     values[v] = trusted ? fv[k] : u[v];
@@ -76,7 +70,7 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
     // the fit's solid stays. Not where the front is at the data: a knife edge's rim discs run on
     // past its tip, and so do the fit's tangent planes (fins).
     const bool adds_solid = values[v] < 0.0 && u[v] > 0.0;
-    const bool hole = is_over_hole(std::size_t(v));
+    const bool hole = !front.over_hole.empty() && front.over_hole[std::size_t(v)];
     if (hole && adds_solid && distance[v] - u[v] > trust_factor * scale[v]) continue;
     // Solid the fit adds outside the front must be near the data: the surface between random
     // samples lies within about 1.45 spacings of one (the largest empty disc, local_sampling.h),
@@ -98,6 +92,16 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
     // wherever the fit is far from the data splits necks.
     if (hole) hand_over(trust_factor);
   }
+  return cuts_bridge;
+}
+
+// The front's topology kept where the fit would join (merge_without_joins), then the voids
+// cut off filled and the specks absorbed.
+template <int D>
+void keep_the_fronts_joins(const FrontToFit<D>& front, const Band<D>& band, const std::vector<char>& cuts_bridge,
+                           std::vector<double>& values) {
+  const SimplexMesh<D>& mesh = front.mesh;
+  const Eigen::VectorXd &u = front.u, &scale = front.scale, &distance = front.distance;
   // The fit moves the surface and may remove what the front got wrong (bridges across a neck it
   // had not cut, handles of a noisy front), but not join what the front kept apart: where the two
   // sides of a thin part or a crease lie within a fit's neighbourhood, its rounding opens handles.
@@ -106,32 +110,53 @@ FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& nei
   // a spanned hole, where the rims' discs hold the front where the samples say the surface goes.
   // A void the merge cut off the outside bounds no data and is filled. Bubbles and specks
   // narrower than a spacing go last.
-  Eigen::VectorXd front = u;
-  cap_at_walls<D>(mesh, front);
+  Eigen::VectorXd capped = u;
+  cap_at_walls<D>(mesh, capped);
   cap_at_walls<D>(mesh, values);
   // In a gap between facing sheets the data's normals on both sides say outside, so the fit may
   // open it even where that joins: the front stalls short in a slit 3-4 spacings wide and its
   // pins hold a membrane across it.
   std::vector<char> may_join(values.size());
   for (std::size_t v = 0; v < values.size(); ++v) {
-    may_join[v] = !is_over_hole(v) && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
+    const bool over_hole = !front.over_hole.empty() && front.over_hole[v];
+    may_join[v] = !over_hole && distance[Eigen::Index(v)] > kUnsupported * scale[Eigen::Index(v)];
   }
-  for (std::size_t i = 0; i < disputed.size(); ++i) {
-    if (in_gap[i]) may_join[std::size_t(band_vertices[disputed[i]])] = 1;
+  for (std::size_t k = 0; k < cuts_bridge.size(); ++k) {
+    if (cuts_bridge[k]) may_join[std::size_t(band.vertices[k])] = 1;
   }
-  merge_without_joins<D>(mesh, front, values, may_join);
-  fill_cut_off_voids<D>(mesh, front, values);
-  absorb_small_parts<D>(mesh, neighbours, scale, values);
+  merge_without_joins<D>(mesh, capped, values, may_join);
+  fill_cut_off_voids<D>(mesh, capped, values);
+  absorb_small_parts<D>(mesh, front.neighbours, scale, values);
+}
+
+}  // namespace
+
+template <int D>
+FittedField fitted_field(const FrontToFit<D>& front, const QuadricImplicit<D>& fit, const std::vector<char>& fitted) {
+  constexpr double band_factor = 3.0;
+  const Eigen::VectorXd &u = front.u, &scale = front.scale;
+  FittedField f{std::vector<double>(u.data(), u.data() + u.size()), {}};
+  Band<D> band;
+  for (Eigen::Index v = 0; v < u.size(); ++v) {
+    if (std::abs(u[v]) < band_factor * scale[v] && (fitted.empty() || fitted[std::size_t(v)])) {
+      band.points.push_back(front.mesh.vertices[v]);
+      band.vertices.push_back(Index(v));
+    }
+  }
+  fit.evaluate(band.points, band.fit, nullptr, front.threads);
+  // Near a sealed opening, the share of F in values: the output is projected onto F only that
+  // far (below), as F extrapolates where the front took over (projected in full, a front's cap
+  // over an open end turns facets inside out). Elsewhere in full: F is the accurate surface.
+  if (!front.near_opening.empty()) {
+    f.fit_share.resize(f.values.size());
+    for (std::size_t v = 0; v < f.values.size(); ++v) f.fit_share[v] = front.near_opening[v] ? 0.0 : 1.0;
+  }
+  const std::vector<char> cuts_bridge = blend_in_band(front, band, f.values, f.fit_share);
+  keep_the_fronts_joins(front, band, cuts_bridge, f.values);
   return f;
 }
 
-template FittedField fitted_field<2>(const SimplexMesh<2>&, const VertexNeighbours&, const QuadricImplicit<2>&, const Eigen::VectorXd&,
-                                      const Eigen::VectorXd&, const Eigen::VectorXd&, double, const std::vector<char>&,
-                                      const std::vector<char>&, const NearestPointIndex<2>&, const Points<2>&, int,
-                                      const std::vector<char>&);
-template FittedField fitted_field<3>(const SimplexMesh<3>&, const VertexNeighbours&, const QuadricImplicit<3>&, const Eigen::VectorXd&,
-                                      const Eigen::VectorXd&, const Eigen::VectorXd&, double, const std::vector<char>&,
-                                      const std::vector<char>&, const NearestPointIndex<3>&, const Points<3>&, int,
-                                      const std::vector<char>&);
+template FittedField fitted_field<2>(const FrontToFit<2>&, const QuadricImplicit<2>&, const std::vector<char>&);
+template FittedField fitted_field<3>(const FrontToFit<3>&, const QuadricImplicit<3>&, const std::vector<char>&);
 
 }  // namespace lsr::detail

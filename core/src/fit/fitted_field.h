@@ -25,14 +25,26 @@ struct FittedField {
   std::vector<double> fit_share;  ///< #V near a sealed opening: how far to project onto F; empty without
 };
 
-/// @brief The field of the fitted surface on `mesh`, from the front u (a signed distance near
-/// its zero set) and the fit F. Only vertices flagged in `fitted` (all when empty) take F: a
-/// tile's fit covers its region alone (tiles/tiled_solve.h).
+/// @brief What the fit reads of the front that evolved on `mesh` (references: they outlive the fit).
 template <int D>
-FittedField fitted_field(const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours, const QuadricImplicit<D>& fit,
-                         const Eigen::VectorXd& u, const Eigen::VectorXd& scale, const Eigen::VectorXd& distance,
-                         double trust_factor, const std::vector<char>& over_hole, const std::vector<char>& near_opening,
-                         const NearestPointIndex<D>& data, const Points<D>& normals, int threads,
-                         const std::vector<char>& fitted = {});
+struct FrontToFit {
+  const SimplexMesh<D>& mesh;
+  const VertexNeighbours& neighbours;
+  const Eigen::VectorXd& u;             ///< #V: the front, a signed distance near its zero set
+  const Eigen::VectorXd& scale;         ///< #V: the local scale
+  const Eigen::VectorXd& distance;      ///< #V: to the nearest data point
+  const std::vector<char>& over_hole;   ///< #V: over a spanned hole; empty without
+  const std::vector<char>& near_opening;  ///< #V: near a sealed opening; empty without
+  const NearestPointIndex<D>& data;
+  const Points<D>& normals;             ///< the data's, oriented outwards
+  double trust_factor;                  ///< gap factor: beyond it, in local scales, no sample supports F
+  int threads;
+};
+
+/// @brief The field of the fitted surface on the front's mesh, from the front u and the fit F.
+/// Only vertices flagged in `fitted` (all when empty) take F: a tile's fit covers its region
+/// alone (tiles/tiled_solve.h).
+template <int D>
+FittedField fitted_field(const FrontToFit<D>& front, const QuadricImplicit<D>& fit, const std::vector<char>& fitted = {});
 
 }  // namespace lsr::detail

@@ -99,13 +99,11 @@ void project_onto_fit(ReconstructionResult<D>& r, const QuadricImplicit<D>& fit,
 }
 
 template <int D>
-Points<D> attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
-                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
-                const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
-                bool volume, int threads) {
-  FittedField f = fitted_field(mesh, neighbours, fit, u, scale, distance, trust_factor, over_hole, near_opening, data, normals, threads);
-  r.surface = extract_closed_surface(mesh, data.points(), f.values, threads);
+Points<D> attach_fit(ReconstructionResult<D>& r, const FrontToFit<D>& front, const QuadricImplicit<D>& fit, bool volume) {
+  const Eigen::VectorXd& scale = front.scale;
+  const int threads = front.threads;
+  FittedField f = fitted_field(front, fit);
+  r.surface = extract_closed_surface(front.mesh, front.data.points(), f.values, threads);
   std::vector<double> share, vertex_scale(r.surface.vertices.size());
   for (std::size_t i = 0; i < vertex_scale.size(); ++i) {
     const EdgePoint& e = r.surface.sources[i];
@@ -113,8 +111,8 @@ Points<D> attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, con
     if (!f.fit_share.empty()) share.push_back((1.0 - e.t) * f.fit_share[std::size_t(e.a)] + e.t * f.fit_share[std::size_t(e.b)]);
   }
   const Points<D> extracted = r.surface.vertices;
-  project_onto_fit(r, fit, share, vertex_scale, data, threads);
-  attach_volume(r, mesh, f.values, volume);
+  project_onto_fit(r, fit, share, vertex_scale, front.data, threads);
+  attach_volume(r, front.mesh, f.values, volume);
   return extracted;
 }
 
@@ -162,15 +160,7 @@ template QuadricImplicit<2> fit_quadrics<2>(const NearestPointIndex<2>&, const P
                                             const Progress&);
 template QuadricImplicit<3> fit_quadrics<3>(const NearestPointIndex<3>&, const Points<3>&, const std::vector<double>&, int,
                                             const Progress&);
-template Points<2> attach_fit<2>(ReconstructionResult<2>& r, const SimplexMesh<2>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<2>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
-                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
-                const std::vector<char>& near_opening, const NearestPointIndex<2>& data, const Points<2>& normals,
-                bool volume, int threads);
-template Points<3> attach_fit<3>(ReconstructionResult<3>& r, const SimplexMesh<3>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<3>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
-                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
-                const std::vector<char>& near_opening, const NearestPointIndex<3>& data, const Points<3>& normals,
-                bool volume, int threads);
+template Points<2> attach_fit<2>(ReconstructionResult<2>&, const FrontToFit<2>&, const QuadricImplicit<2>&, bool);
+template Points<3> attach_fit<3>(ReconstructionResult<3>&, const FrontToFit<3>&, const QuadricImplicit<3>&, bool);
 
 }  // namespace lsr::detail

@@ -4,6 +4,7 @@
 /// the front decided.
 #pragma once
 
+#include "fit/fitted_field.h"
 #include "fit/quadric_implicit.h"
 #include "geometry/nearest_point_index.h"
 #include "lsrecon/core/level_set_reconstruction.h"
@@ -21,11 +22,7 @@ namespace lsr::detail {
 // projected onto F itself, which removes the P1 interpolation error of the extraction.
 // Returns the surface's vertices as extracted: a level set, embedded (embedded_moves.h).
 template <int D>
-Points<D> attach_fit(ReconstructionResult<D>& r, const SimplexMesh<D>& mesh, const VertexNeighbours& neighbours,
-                const QuadricImplicit<D>& fit, const Eigen::VectorXd& u, const Eigen::VectorXd& scale,
-                const Eigen::VectorXd& distance, double trust_factor, const std::vector<char>& over_hole,
-                const std::vector<char>& near_opening, const NearestPointIndex<D>& data, const Points<D>& normals,
-                bool volume, int threads);
+Points<D> attach_fit(ReconstructionResult<D>& r, const FrontToFit<D>& front, const QuadricImplicit<D>& fit, bool volume);
 
 /// @brief The surface extracted from the fitted field, onto F: each vertex projected by its
 /// `share` (empty: in full), normals F's; the unsupported parts (farther than kUnsupported

@@ -113,9 +113,9 @@ std::vector<double> tile_fitted_field(const SampledData<D>& sampled, const Point
   for (std::size_t v = 0; v < fitted.size(); ++v) fitted[v] = in_closed_box<D>(mesh.vertices[v], box.region_lo, box.region_hi);
   const NearestPointIndex<D> index(std::move(near));
   const QuadricImplicit<D> fit = fit_quadrics(index, near_normals, near_scale, o.limits.threads);
-  return fitted_field(mesh, front.neighbours, fit, front.best, front.at_vertex.scale, front.at_vertex.distance, o.sampling.gap_factor,
-                      front.over_hole, front.near_opening, sampled.data, normals, o.limits.threads, fitted)
-      .values;
+  const FrontToFit<D> to_fit{mesh,         front.neighbours, front.best, front.at_vertex.scale, front.at_vertex.distance, front.over_hole,
+                             front.near_opening, sampled.data, normals,   o.sampling.gap_factor, o.limits.threads};
+  return fitted_field(to_fit, fit, fitted).values;
 }
 
 template <int D>
