@@ -79,6 +79,24 @@ class FrontEvolution {
   bool best_is_distance() const { return best_is_distance_; }
 
  private:
+  /// The points the stopping test reads (a tile's own), how many cloud points they stand for,
+  /// and the vertices whose front it ignores (near spanned holes; in a tile, also beyond it).
+  struct TestedScope {
+    bool all = true;
+    double cloud_points = 0.0;
+    std::vector<char> front_ignored;  ///< #V; empty when all are tested
+  };
+  TestedScope tested_scope() const;
+  /// One semi-implicit step of u driven by d, the drive the options choose (drives.h).
+  void step(SemiImplicitStepper<D>& stepper, const Eigen::VectorXd& d, Eigen::VectorXd& u, SolverReport& solve) const;
+  /// Renormalises u near its front and measures the front against the data: its largest
+  /// distance past the tolerance (stopping_test.h) and its measure (the displacement's denominator).
+  void renormalize_front(Eigen::VectorXd& u, const Eigen::VectorXd& d, const TestedScope& tested, double& front_distance,
+                         double& front_area) const;
+  /// Keeps u as the best iterate if its residual is the lowest yet; returns whether it was.
+  bool keep_if_best(const Eigen::VectorXd& u, int n, double residual, const std::vector<double>& per_point,
+                    ReconstructionResult<D>& r);
+
   const FrontProblem<D>& p_;
   const ReconstructionOptions& o_;
   FrontSchedule schedule_;

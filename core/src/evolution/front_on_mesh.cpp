@@ -13,6 +13,38 @@
 
 namespace lsr::detail {
 
+namespace {
+
+// Per point, whether it lies in the closed box `region` (lower and upper corners); empty without one.
+template <int D>
+std::vector<char> inside_region(const Points<D>& points, const std::array<Vec<D>, 2>* region) {
+  std::vector<char> inside;
+  if (region == nullptr) return inside;
+  inside.reserve(points.size());
+  for (const Vec<D>& x : points) inside.push_back(in_closed_box<D>(x, (*region)[0], (*region)[1]));
+  return inside;
+}
+
+// The mesh's edge graph and the P1 operators of the scheme, into f.
+template <int D>
+void assemble_operators(const SimplexMesh<D>& mesh, const ReconstructionOptions& o, FrontOnMesh<D>& f) {
+  const bool reference = o.evolution.solver == LinearSolver::gmres_reference;
+  const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, reference);
+  f.neighbours = vertex_neighbours(mesh, geometry, o.limits.threads);
+  f.ops = assemble_p1_operators(mesh, geometry, reference, &f.neighbours, o.limits.threads);
+}
+
+// The scheme's settings as the result reports them (the tolerance in input units).
+template <int D>
+void report_settings(const EvolutionSettings& settings, double box_scale, ReconstructionResult<D>& r) {
+  r.time_step = settings.step.time_step;
+  r.alpha = settings.step.alpha;
+  r.curvature_weight = settings.step.curvature_weight;
+  r.tolerance = settings.median_eps / box_scale;
+}
+
+}  // namespace
+
 template <int D>
 FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<double>& point_scale, AdaptiveMesh<D>& adaptive,
                              const ReconstructionOptions& o, double hole_radius, const SignedDistance<D>* custom_start,
@@ -22,8 +54,6 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   const LocalSampling<D>& sampling = sampled.sampling;
   const UnitBoxTransform<D>& box = sampled.box;
   const SimplexMesh<D>& mesh = adaptive.mesh;
-  // In 3D only the rim points carry discs (LocalSampling::rim); in 2D every point does.
-  const bool rims_only = D == 3;
   FrontOnMesh<D> f;
 
   // 5. The distance d at the vertices, each vertex's scale, each point's place in the mesh.
@@ -39,11 +69,7 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
 
   // 6. The P1 operators of the scheme.
   progress.update("operators", -1.0);
-  {
-    const SimplexGeometry<D> geometry = compute_simplex_geometry(mesh, o.evolution.solver == LinearSolver::gmres_reference);
-    f.neighbours = vertex_neighbours(mesh, geometry, o.limits.threads);
-    f.ops = assemble_p1_operators(mesh, geometry, o.evolution.solver == LinearSolver::gmres_reference, &f.neighbours, o.limits.threads);
-  }
+  assemble_operators(mesh, o, f);
   clock.end("operators");
 
   // 7. The settings, the attraction (spanned holes included) and u0.
@@ -51,12 +77,10 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   const EvolutionSettings settings = resolve_evolution_settings(
       o, scale, at_vertex.noise, point_scale, sampled.spacing,
       (o.start.initial_front != InitialFront::tagged && o.start.initial_front != InitialFront::occupancy) || custom_start);
-  r.time_step = settings.step.time_step;
-  r.alpha = settings.step.alpha;
-  r.curvature_weight = settings.step.curvature_weight;
-  r.tolerance = settings.median_eps / box.scale();
+  report_settings(settings, box.scale(), r);
   f.band = settings.schedule.band;
-  Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.sampling.gap_factor, hole_radius, rims_only, o.limits.threads);
+  // In 3D only the rim points carry discs (LocalSampling::rim); in 2D every point does.
+  Attraction attract = attraction(data, sampling, mesh, dist, at_vertex.distance, scale, o.sampling.gap_factor, hole_radius, D == 3, o.limits.threads);
   const OpenSideInputs<D> open{data, sampling.normals, point_scale, dist, at_vertex.nearest};
   const StartField<D> start = start_field(mesh, f.neighbours, data, sampling, attract.d, at_vertex.distance, dist, scale, o, hole_radius,
                                           settings.schedule.band, r.h_min, custom_start, box, &open);
@@ -76,14 +100,8 @@ FrontOnMesh<D> front_on_mesh(const SampledData<D>& sampled, const std::vector<do
   const Points<D> away = o.evolution.two_sided || settings.schedule.rest_past_data ? away_from_data(data, mesh, at_vertex) : Points<D>();
 
   // 8. The time loop: the front evolves to the data; the best iterate is kept.
-  std::vector<char> tested_points, tested_vertices;
-  if (tested) {
-    const auto inside = [&](const Vec<D>& x) {
-      return ((x - (*tested)[0]).array() >= 0.0).all() && (((*tested)[1] - x).array() >= 0.0).all();
-    };
-    for (const Vec<D>& x : data.points()) tested_points.push_back(inside(x));
-    for (const Vec<D>& x : mesh.vertices) tested_vertices.push_back(inside(x));
-  }
+  const std::vector<char> tested_points = inside_region(data.points(), tested);
+  const std::vector<char> tested_vertices = inside_region(mesh.vertices, tested);
   const FrontProblem<D> problem{mesh,         f.neighbours,         f.ops, f.at,          cells,
                                 settings.eps, settings.reach,       settings.front_tolerance,
                                 scale,        dist,                 away,  near_hole,     sampled.left_out.represented,

@@ -35,6 +35,12 @@ struct FrontOnMesh {
   bool best_is_distance = false;     ///< it was renormalised
 };
 
+/// @brief Whether x lies in the closed box [lo, hi] (a tile's region, its faces included).
+template <int D>
+bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
+  return ((x - lo).array() >= 0.0).all() && ((hi - x).array() >= 0.0).all();
+}
+
 /// @brief Evolves the front from u0 (the caller's `custom_start`, or options.start's) on
 /// `adaptive`'s mesh, whose forest locates the data and is then released (an anisotropic mesh
 /// has none: the mesh alone locates). `point_scale` is the data's, raised to the mesh's sizes.

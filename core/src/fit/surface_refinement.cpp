@@ -12,6 +12,44 @@ namespace {
 // more than the anisotropic sizes' ratio.
 constexpr int kMaxPasses = 10;
 
+// Facet f cut at the midpoints m of its split edges (-1: not split) into `out`: four facets
+// with three, two with one, and with two the corner triangle and the quadrilateral left,
+// cut along its shorter diagonal (`at`: a vertex's position).
+template <class At>
+void split_facet(const std::array<Index, 3>& f, const std::array<Index, 3>& m, const At& at, std::vector<std::array<Index, 3>>& out) {
+  const int split = int(m[0] >= 0) + int(m[1] >= 0) + int(m[2] >= 0);
+  if (split == 0) {
+    out.push_back(f);
+    return;
+  }
+  if (split == 3) {
+    out.push_back({f[0], m[0], m[2]});
+    out.push_back({m[0], f[1], m[1]});
+    out.push_back({m[2], m[1], f[2]});
+    out.push_back({m[0], m[1], m[2]});
+    return;
+  }
+  // Turned so that edge 0 (v0 v1) is split and, with two split, edge 1 too.
+  int r = 0;
+  while (!(m[std::size_t(r)] >= 0 && (split == 1 || m[std::size_t((r + 1) % 3)] >= 0))) ++r;
+  const Index v0 = f[std::size_t(r)], v1 = f[std::size_t((r + 1) % 3)], v2 = f[std::size_t((r + 2) % 3)];
+  const Index m01 = m[std::size_t(r)];
+  if (split == 1) {
+    out.push_back({v0, m01, v2});
+    out.push_back({m01, v1, v2});
+    return;
+  }
+  const Index m12 = m[std::size_t((r + 1) % 3)];
+  out.push_back({m01, v1, m12});
+  if ((at(v0) - at(m12)).squaredNorm() <= (at(m01) - at(v2)).squaredNorm()) {
+    out.push_back({v0, m01, m12});
+    out.push_back({v0, m12, v2});
+  } else {
+    out.push_back({v0, m01, v2});
+    out.push_back({m01, m12, v2});
+  }
+}
+
 }  // namespace
 
 void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const QuadricImplicit<3>& fit,
@@ -45,46 +83,12 @@ void refine_long_edges(LevelSetMesh<3>& surface, Points<3>& normals, const Quadr
       const auto it = std::lower_bound(long_edges.begin(), long_edges.end(), std::make_pair(e.first, e.second));
       return it != long_edges.end() && *it == std::make_pair(e.first, e.second) ? first_new + Index(it - long_edges.begin()) : -1;
     };
+    const auto at = [&](Index v) -> Vec<3> {
+      return v >= first_new ? added[std::size_t(v - first_new)] : Vec<3>(surface.vertices[std::size_t(v)]);
+    };
     std::vector<std::array<Index, 3>> facets;
     facets.reserve(surface.facets.size() * 2);
-    for (const auto& f : surface.facets) {
-      std::array<Index, 3> m{midpoint(f[0], f[1]), midpoint(f[1], f[2]), midpoint(f[2], f[0])};
-      const int split = int(m[0] >= 0) + int(m[1] >= 0) + int(m[2] >= 0);
-      if (split == 0) {
-        facets.push_back(f);
-        continue;
-      }
-      if (split == 3) {
-        facets.push_back({f[0], m[0], m[2]});
-        facets.push_back({m[0], f[1], m[1]});
-        facets.push_back({m[2], m[1], f[2]});
-        facets.push_back({m[0], m[1], m[2]});
-        continue;
-      }
-      // Turned so that edge 0 (v0 v1) is split and, with two split, edge 1 too.
-      int r = 0;
-      while (!(m[std::size_t(r)] >= 0 && (split == 1 || m[std::size_t((r + 1) % 3)] >= 0))) ++r;
-      const Index v0 = f[std::size_t(r)], v1 = f[std::size_t((r + 1) % 3)], v2 = f[std::size_t((r + 2) % 3)];
-      const Index m01 = m[std::size_t(r)];
-      if (split == 1) {
-        facets.push_back({v0, m01, v2});
-        facets.push_back({m01, v1, v2});
-        continue;
-      }
-      const Index m12 = m[std::size_t((r + 1) % 3)];
-      facets.push_back({m01, v1, m12});
-      // The quadrilateral v0 m01 m12 v2, cut along its shorter diagonal.
-      const auto at = [&](Index v) -> Vec<3> {
-        return v >= first_new ? added[std::size_t(v - first_new)] : Vec<3>(surface.vertices[std::size_t(v)]);
-      };
-      if ((at(v0) - at(m12)).squaredNorm() <= (at(m01) - at(v2)).squaredNorm()) {
-        facets.push_back({v0, m01, m12});
-        facets.push_back({v0, m12, v2});
-      } else {
-        facets.push_back({v0, m01, v2});
-        facets.push_back({m01, m12, v2});
-      }
-    }
+    for (const auto& f : surface.facets) split_facet(f, {midpoint(f[0], f[1]), midpoint(f[1], f[2]), midpoint(f[2], f[0])}, at, facets);
     const Points<3> midpoints = added;
     Points<3> added_normals = fit.project(added, threads);
     for (std::size_t k = 0; k < added.size(); ++k) {

@@ -254,6 +254,20 @@ double typical_size(const AdaptiveMeshOptions& o) {
   return std::max(o.h_min, s[s.size() / 10]);
 }
 
+// The centroids of the candidates whose outcome is not certain, and how far to search from
+// each: its radius + size / grading (any distance for a simplex wider than h_max).
+template <int D>
+void uncertain_searches(const Candidates<D>& cand, const std::vector<Certain>& certain, const AdaptiveMeshOptions& o,
+                        Points<D>& searched, std::vector<double>& bound) {
+  searched.clear();
+  bound.clear();
+  for (std::size_t i = 0; i < cand.nodes.size(); ++i) {
+    if (certain[i] != Certain::no) continue;
+    searched.push_back(cand.centroids[i]);
+    bound.push_back(cand.sizes[i] > o.h_max ? std::numeric_limits<double>::infinity() : cand.radii[i] + cand.sizes[i] / o.grading);
+  }
+}
+
 }  // namespace
 
 void validate(const AdaptiveMeshOptions& o) {
@@ -274,9 +288,15 @@ void validate(const AdaptiveMeshOptions& o) {
   }
 }
 
+namespace {
+
+// Cells per side of the background grid: it already meets h_max (cells at most h_max wide).
+int background_cells(double h_max) { return 1 << int(std::ceil(std::log2(1.0 / h_max) - 1e-9)); }
+
+// The options checked against the data, and the mesh's predicted size against max_vertices
+// (MeshTooLarge, with the resolution that would fit): the options with h_min the typical size.
 template <int D>
-AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
-                                    const AdaptiveMeshOptions& o, const Progress& progress) {
+AdaptiveMeshOptions checked_prediction(const NearestPointIndex<D>& data, const AdaptiveMeshOptions& o) {
   validate(o);
   if (!o.point_size.empty() && o.point_size.size() != data.points().size()) {
     throw InvalidInput("point_size has " + std::to_string(o.point_size.size()) + " entries for " +
@@ -301,13 +321,21 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
                        std::floor(0.8 * resolution * std::pow(limit / lower_bound, 1.0 / (D - 1))));
   }
 
-  // The background grid already meets h_max: cells are at most h_max wide.
-  const int cells = 1 << int(std::ceil(std::log2(1.0 / o.h_max) - 1e-9));
-  if (std::pow(cells + 1.0, D) > limit) {
+  if (std::pow(background_cells(o.h_max) + 1.0, D) > limit) {
     throw MeshTooLarge("the background grid for h_max = " + std::to_string(o.h_max) +
                            " alone needs more than " + std::to_string(o.max_vertices) + " vertices",
                        resolution);
   }
+  return predicted;
+}
+
+}  // namespace
+
+template <int D>
+AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
+                                    const AdaptiveMeshOptions& o, const Progress& progress) {
+  const AdaptiveMeshOptions predicted = checked_prediction(data, o);
+  const int cells = background_cells(o.h_max);
   KuhnBisectionForest<D> forest(cells);
   int passes = 0;
   // One pass per bisection level from the background cells down to h_min.
@@ -339,14 +367,7 @@ AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
     for (std::size_t i = 0; i < nc && !o.region_lo.empty(); ++i) {
       if (!meets_region(forest, cand.nodes[i], o)) certain[i] = Certain::unmarked;
     }
-    searched.clear();
-    bound.clear();
-    for (std::size_t i = 0; i < nc; ++i) {
-      if (certain[i] != Certain::no) continue;
-      searched.push_back(cand.centroids[i]);
-      bound.push_back(cand.sizes[i] > o.h_max ? std::numeric_limits<double>::infinity()
-                                              : cand.radii[i] + cand.sizes[i] / o.grading);
-    }
+    uncertain_searches(cand, certain, o, searched, bound);
     data.query_within(searched, bound, dist, nearest, o.threads);
     const Index first_new = Index(forest.simplices().size());
     double largest_marked = 0.0;

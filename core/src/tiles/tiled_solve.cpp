@@ -38,11 +38,6 @@ bool in_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
 }
 
 template <int D>
-bool in_closed_box(const Vec<D>& x, const Vec<D>& lo, const Vec<D>& hi) {
-  return ((x - lo).array() >= 0.0).all() && ((hi - x).array() >= 0.0).all();
-}
-
-template <int D>
 std::array<double, D> key_of(const Vec<D>& x) {
   std::array<double, D> k;
   std::copy_n(x.data(), D, k.begin());
