@@ -245,15 +245,6 @@ std::vector<Certain> certain_outcomes(const KuhnBisectionForest<D>& forest, cons
   return certain;
 }
 
-// The size most of the data asks for: what the size predictions assume (h_min alone would
-// over-predict a mesh whose sizes follow a coarser local sampling).
-double typical_size(const AdaptiveMeshOptions& o) {
-  if (o.point_size.empty()) return o.h_min;
-  std::vector<double> s = o.point_size;
-  std::nth_element(s.begin(), s.begin() + s.size() / 10, s.end());
-  return std::max(o.h_min, s[s.size() / 10]);
-}
-
 // The centroids of the candidates whose outcome is not certain, and how far to search from
 // each: its radius + size / grading (any distance for a simplex wider than h_max).
 template <int D>
@@ -287,49 +278,6 @@ void validate(const AdaptiveMeshOptions& o) {
     throw InvalidInput("max_vertices must be positive", "pass a positive count (lsr::reconstruct sets it from max_memory)");
   }
 }
-
-namespace {
-
-// Cells per side of the background grid: it already meets h_max (cells at most h_max wide).
-int background_cells(double h_max) { return 1 << int(std::ceil(std::log2(1.0 / h_max) - 1e-9)); }
-
-// The options checked against the data, and the mesh's predicted size against max_vertices
-// (MeshTooLarge, with the resolution that would fit): the options with h_min the typical size.
-template <int D>
-AdaptiveMeshOptions checked_prediction(const NearestPointIndex<D>& data, const AdaptiveMeshOptions& o) {
-  validate(o);
-  if (!o.point_size.empty() && o.point_size.size() != data.points().size()) {
-    throw InvalidInput("point_size has " + std::to_string(o.point_size.size()) + " entries for " +
-                           std::to_string(data.points().size()) + " points",
-                       "pass one size per data point, or none");
-  }
-  if (o.region_lo.size() != o.region_hi.size() || !(o.region_lo.empty() || o.region_lo.size() == std::size_t(D))) {
-    throw InvalidInput("the region has " + std::to_string(o.region_lo.size()) + " and " + std::to_string(o.region_hi.size()) +
-                           " coordinates",
-                       "pass " + std::to_string(D) + " coordinates for each corner, or none");
-  }
-  AdaptiveMeshOptions predicted = o;
-  predicted.h_min = typical_size(o);
-  const double resolution = 1.0 / predicted.h_min;
-  const double limit = double(o.max_vertices);
-  const double lower_bound = occupied_cells<D>(data.points(), o.point_size, predicted.h_min);
-  if (lower_bound > limit) {
-    throw MeshTooLarge("a mesh at resolution " + std::to_string(int(resolution)) + " needs over " +
-                           std::to_string(std::int64_t(lower_bound)) + " vertices (limit " +
-                           std::to_string(o.max_vertices) + ")",
-                       // occupied cells scale like resolution^(D-1) on a surface
-                       std::floor(0.8 * resolution * std::pow(limit / lower_bound, 1.0 / (D - 1))));
-  }
-
-  if (std::pow(background_cells(o.h_max) + 1.0, D) > limit) {
-    throw MeshTooLarge("the background grid for h_max = " + std::to_string(o.h_max) +
-                           " alone needs more than " + std::to_string(o.max_vertices) + " vertices",
-                       resolution);
-  }
-  return predicted;
-}
-
-}  // namespace
 
 template <int D>
 AdaptiveMesh<D> build_adaptive_mesh(const NearestPointIndex<D>& data,
